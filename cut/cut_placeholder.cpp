@@ -1,0 +1,1 @@
+// Empty until the cut layer lands; keeps the library target buildable.

@@ -1,0 +1,41 @@
+#pragma once
+// A triangle surface: the input of the mesher and the boundary of a tet mesh
+// on output. Surface files (OBJ, OFF, STL, PLY) are read and written through
+// OpenMesh; polygon faces are triangulated on reading.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/predicates.h"
+
+namespace mtcut::engine {
+
+struct TetMesh;
+
+struct SurfaceMesh {
+  std::vector<Vec3> positions;                       // (n_vertices)
+  std::vector<std::array<std::int32_t, 3>> triangles;  // (n_triangles) vertex ids, outward for a closed surface
+
+  // Volume enclosed (divergence theorem); positive for an outward-oriented closed surface.
+  double enclosed_volume() const;
+  // Edges used by other than exactly two triangles: holes or non-manifold seams.
+  std::size_t count_open_edges() const;
+};
+
+// True for the extensions read_surface_file handles (.obj .off .stl .ply).
+bool is_surface_file(const std::string& path);
+
+// Reads a surface with OpenMesh, triangulating polygons; drops unused vertices.
+// Throws InputError for a missing, empty or unreadable file, or non-finite coordinates.
+SurfaceMesh read_surface_file(const std::string& path);
+
+// Writes a surface (format from the extension: .obj .off .stl .ply) through
+// OpenMesh, atomically. Throws InputError when the path cannot be written.
+void write_surface_file(const SurfaceMesh& surface, const std::string& path);
+
+// The boundary of a tet mesh as a surface over the same vertex ids compacted.
+SurfaceMesh extract_boundary(const TetMesh& mesh);
+
+}  // namespace mtcut::engine

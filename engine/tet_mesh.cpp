@@ -1,0 +1,132 @@
+#include "engine/tet_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "engine/input_error.h"
+#include "engine/tet_adjacency.h"
+#include "engine/tet_geometry.h"
+
+namespace mtcut::engine {
+
+std::array<Vec3, 4> TetMesh::corners(TetId t) const {
+  const Tet& tet = tets[t.index()];
+  return {position(tet[0]), position(tet[1]), position(tet[2]), position(tet[3])};
+}
+
+double TetMesh::volume(TetId t) const {
+  const auto c = corners(t);
+  return signed_volume(c[0], c[1], c[2], c[3]);
+}
+
+double TetMesh::total_volume() const {
+  double sum = 0;
+  for (std::size_t t = 0; t < tets.size(); ++t) sum += volume(TetId(t));
+  return sum;
+}
+
+ValidationReport TetMesh::validate() const {
+  ValidationReport report;
+  const auto nv = static_cast<std::int32_t>(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    if (!positions[v].allFinite()) report.add("vertex " + std::to_string(v) + " has a non-finite position");
+
+  bool ids_ok = true;
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const Tet& tet = tets[t];
+    for (VertId v : tet) {
+      if (v.value < 0 || v.value >= nv) {
+        report.add("tet " + std::to_string(t) + " refers to vertex " + std::to_string(v.value) +
+                   " (mesh has " + std::to_string(nv) + ")");
+        ids_ok = false;
+      }
+    }
+  }
+  if (!ids_ok) return report;  // geometry checks would read out of range
+
+  std::vector<std::array<std::int32_t, 4>> sorted(tets.size());
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const Tet& tet = tets[t];
+    const std::array<std::int32_t, 4> ids = {tet[0].value, tet[1].value, tet[2].value, tet[3].value};
+    sorted[t] = ids;
+    std::sort(sorted[t].begin(), sorted[t].end());
+    if (std::adjacent_find(sorted[t].begin(), sorted[t].end()) != sorted[t].end()) {
+      report.add("tet " + std::to_string(t) + " repeats a vertex");
+      continue;
+    }
+    const auto c = corners(TetId(t));
+    const int sign = orient3d_sign(c[0], c[1], c[2], c[3]);
+    if (sign == 0) report.add("tet " + std::to_string(t) + " is degenerate (zero volume)");
+    if (sign < 0) report.add("tet " + std::to_string(t) + " is negatively oriented");
+  }
+
+  std::map<std::array<std::int32_t, 4>, std::size_t> first_with;
+  for (std::size_t t = 0; t < sorted.size(); ++t) {
+    auto [it, inserted] = first_with.emplace(sorted[t], t);
+    if (!inserted) report.add("tets " + std::to_string(it->second) + " and " + std::to_string(t) + " are duplicates");
+  }
+
+  const TetAdjacency adj = build_adjacency(*this);
+  if (adj.non_manifold_faces > 0)
+    report.add(std::to_string(adj.non_manifold_faces) + " faces are shared by more than two tets");
+  // Two tets across a face must see it with opposite orientations.
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    for (int f = 0; f < 4; ++f) {
+      const TetId u = adj.neighbors[t][f];
+      if (!u.valid() || u.index() < t) continue;
+      const auto mine = face_vertices(tets[t], f);
+      const Tet& other = tets[u.index()];
+      const VertId opposite = *std::find_if(other.begin(), other.end(), [&](VertId v) {
+        return v != mine[0] && v != mine[1] && v != mine[2];
+      });
+      const auto c = std::array<Vec3, 4>{position(mine[0]), position(mine[1]), position(mine[2]), position(opposite)};
+      if (orient3d_sign(c[0], c[1], c[2], c[3]) <= 0)
+        report.add("tets " + std::to_string(t) + " and " + std::to_string(u.value) + " overlap across their shared face");
+    }
+  }
+  // Manifold boundary: every boundary edge is used by exactly two boundary
+  // faces, once in each direction.
+  std::map<std::pair<std::int32_t, std::int32_t>, int> directed;
+  for (const auto& bf : adj.boundary)
+    for (int k = 0; k < 3; ++k) ++directed[{bf.verts[k].value, bf.verts[(k + 1) % 3].value}];
+  for (const auto& [edge, count] : directed) {
+    const auto back = directed.find({edge.second, edge.first});
+    const int reverse = back == directed.end() ? 0 : back->second;
+    if (count != 1 || reverse != 1) {
+      if (edge.first < edge.second || reverse == 0)
+        report.add("boundary edge (" + std::to_string(edge.first) + ", " + std::to_string(edge.second) +
+                   ") is not manifold (" + std::to_string(count) + " + " + std::to_string(reverse) + " faces)");
+    }
+  }
+  return report;
+}
+
+TetMesh make_tet_mesh(std::vector<Vec3> positions, const std::vector<std::array<std::int64_t, 4>>& tets,
+                      const std::string& source) {
+  TetMesh mesh;
+  mesh.positions = std::move(positions);
+  const auto nv = static_cast<std::int64_t>(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+    if (!mesh.positions[v].allFinite())
+      throw InputError(source + ": vertex " + std::to_string(v) + " has a non-finite coordinate");
+  mesh.tets.reserve(tets.size());
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    Tet tet;
+    for (int k = 0; k < 4; ++k) {
+      const std::int64_t id = tets[t][k];
+      if (id < 0 || id >= nv)
+        throw InputError(source + ": tet " + std::to_string(t) + " refers to vertex " + std::to_string(id) +
+                         ", but there are " + std::to_string(nv) + " vertices");
+      tet[k] = VertId(static_cast<std::int32_t>(id));
+    }
+    const int sign = orient3d_sign(mesh.position(tet[0]), mesh.position(tet[1]), mesh.position(tet[2]),
+                                   mesh.position(tet[3]));
+    if (sign == 0) throw InputError(source + ": tet " + std::to_string(t) + " is degenerate (zero volume)");
+    if (sign < 0) std::swap(tet[2], tet[3]);
+    mesh.tets.push_back(tet);
+  }
+  return mesh;
+}
+
+}  // namespace mtcut::engine

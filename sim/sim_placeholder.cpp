@@ -1,0 +1,1 @@
+// Empty until the sim layer lands; keeps the library target buildable.
