@@ -1,0 +1,39 @@
+// Which files are tet-mesh files, and which reader reads each: by the
+// lower-cased extension. The readers themselves live one per format.
+
+#include "engine/io/mesh_file.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "engine/input_error.h"
+#include "engine/io/mesh_readers.h"
+
+namespace mtcut::engine {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+bool is_volume_file(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".node" || ext == ".ele" || ext == ".msh" || ext == ".vtk" || ext == ".vtu";
+}
+
+RawMesh read_volume_file(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".node" || ext == ".ele") {
+    const auto [node_path, ele_path] = tetgen_pair(path);
+    return read_tetgen(node_path, ele_path);
+  }
+  if (ext == ".msh" || ext == ".vtk" || ext == ".vtu")
+    throw InputError(path + ": reading " + ext + " files is not available yet");
+  throw InputError(path + ": unknown tet-mesh format '" + ext + "' (expected .node, .ele, .msh, .vtk or .vtu)");
+}
+
+}  // namespace mtcut::engine
