@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 
@@ -15,9 +16,9 @@ constexpr double kPi = std::numbers::pi;
 // Edge length of a regular tet of volume v.
 double regular_edge_for_volume(double v) { return std::cbrt(v * 6.0 * std::numbers::sqrt2); }
 
-// The icosahedron refined by midpoint subdivision until its edges are below
-// `edge` on the unit sphere (at least `min_levels` times), projected to it.
-SurfaceMesh unit_icosphere(double edge, int min_levels) {
+// The icosahedron refined `levels` times by midpoint subdivision (20 * 4^levels
+// triangles), projected onto the unit sphere.
+SurfaceMesh unit_icosphere(int levels) {
   const double p = (1.0 + std::sqrt(5.0)) / 2.0;
   SurfaceMesh s;
   s.positions = {{-1, p, 0}, {1, p, 0}, {-1, -p, 0}, {1, -p, 0}, {0, -1, p}, {0, 1, p},
@@ -26,8 +27,7 @@ SurfaceMesh unit_icosphere(double edge, int min_levels) {
   s.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
                  {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
                  {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-  double current_edge = (s.positions[0] - s.positions[11]).norm();
-  for (int level = 0; level < min_levels || current_edge > edge; ++level) {
+  for (int level = 0; level < levels; ++level) {
     std::map<std::pair<int, int>, int> midpoint;
     auto mid = [&](int a, int b) {
       auto [it, inserted] = midpoint.emplace(std::make_pair(std::min(a, b), std::max(a, b)), 0);
@@ -47,7 +47,6 @@ SurfaceMesh unit_icosphere(double edge, int min_levels) {
       next.push_back({ab, bc, ca});
     }
     s.triangles = std::move(next);
-    current_edge /= 2.0;
   }
   return s;
 }
@@ -65,7 +64,7 @@ SurfaceMesh box_surface(const Vec3& size) {
 SurfaceMesh cylinder_surface(const Vec3& size, double edge) {
   const double rx = size.x() / 2, ry = size.y() / 2, hz = size.z() / 2;
   const double perimeter = 2 * kPi * std::max(rx, ry);
-  const int segments = std::max(24, static_cast<int>(std::ceil(perimeter / edge)));
+  const int segments = std::max(12, static_cast<int>(std::ceil(perimeter / edge)));
   const int rings = std::max(1, static_cast<int>(std::ceil(size.z() / edge)));
   SurfaceMesh s;
   for (int r = 0; r <= rings; ++r)
@@ -124,15 +123,20 @@ SurfaceMesh make_builtin_surface(const BuiltinShapeDef& def) {
   switch (def.shape) {
     case BuiltinShape::kBox: return box_surface(def.size);
     case BuiltinShape::kEllipsoid: {
-      // Edge measured on the unit sphere: scale the target by the smallest radius.
-      s = unit_icosphere(target_edge(def) / (def.size.maxCoeff() / 2), 2);
+      // About N^(2/3) triangles, under the boundary share of a quality mesh of N
+      // tets; a finer surface would force more tets than asked for, and
+      // TetGen splits surface triangles wherever quality needs it.
+      const double max_faces = std::pow(def.target_tets, 2.0 / 3.0);
+      int levels = 1;
+      while (20.0 * std::pow(4.0, levels + 1) <= max_faces) ++levels;
+      s = unit_icosphere(levels);
       for (auto& p : s.positions) p = p.cwiseProduct(def.size / 2);
       lateral_scale = std::cbrt(analytic_volume(def) / s.enclosed_volume());
       for (auto& p : s.positions) p *= lateral_scale;
       return s;
     }
     case BuiltinShape::kCylinder: {
-      s = cylinder_surface(def.size, target_edge(def));
+      s = cylinder_surface(def.size, 2.0 * target_edge(def));
       lateral_scale = std::sqrt(analytic_volume(def) / s.enclosed_volume());
       for (auto& p : s.positions) p.head<2>() *= lateral_scale;
       return s;
@@ -144,17 +148,35 @@ SurfaceMesh make_builtin_surface(const BuiltinShapeDef& def) {
 TetMesh make_builtin_mesh(const BuiltinShapeDef& def, const TetrahedralizeOptions& quality) {
   const SurfaceMesh surface = make_builtin_surface(def);
   const double volume = analytic_volume(def);
-  const std::string name = "builtin shape";
-  // TetGen's tets are smaller than the -a bound by a factor that depends on
-  // the quality setting; learn it on a small run, then aim.
-  const int probe_tets = std::min(def.target_tets, 5000);
+  // The count TetGen makes falls with the -a bound like a power law whose
+  // exponent depends on the shape and on how much the surface already forces
+  // (about -1 for a box, much flatter for a curved surface). Aim, measure,
+  // then re-aim by the secant in log-log space.
+  constexpr double kTolerance = 0.1;
+  constexpr int kAttempts = 6;
+  const double target = def.target_tets;
   TetrahedralizeOptions options = quality;
-  options.max_volume = volume / probe_tets;
-  TetMesh probe = tetrahedralize(surface, options, name);
-  const double fill = static_cast<double>(probe.num_tets()) / probe_tets;  // tets made per tet asked
-  options.max_volume = volume * fill / def.target_tets;
-  if (probe_tets == def.target_tets && std::abs(fill - 1.0) < 0.15) return probe;
-  return tetrahedralize(surface, options, name);
+  options.max_volume = 1.2 * volume / target;
+  TetMesh best;
+  double best_error = std::numeric_limits<double>::infinity();
+  double previous_bound = 0, previous_count = 0;
+  for (int attempt = 0; attempt < kAttempts; ++attempt) {
+    TetMesh mesh = tetrahedralize(surface, options, "builtin shape");
+    const double count = static_cast<double>(mesh.num_tets());
+    const double error = std::abs(count / target - 1.0);
+    if (error < best_error) {
+      best_error = error;
+      best = std::move(mesh);
+    }
+    if (error < kTolerance) break;
+    double exponent = 1.0;  // count ~ bound^-exponent
+    if (previous_count > 0 && count != previous_count)
+      exponent = std::clamp(std::log(previous_count / count) / std::log(options.max_volume / previous_bound), 0.1, 2.0);
+    previous_bound = options.max_volume;
+    previous_count = count;
+    options.max_volume *= std::pow(count / target, 1.0 / exponent);
+  }
+  return best;
 }
 
 }  // namespace mtcut::engine

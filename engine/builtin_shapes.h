@@ -18,7 +18,7 @@ struct BuiltinShapeDef {
   // Full extents along x, y, z (box sides, ellipsoid diameters; the cylinder's
   // axis is z with diameters x and y). The default is a liver-lobe-like organ.
   Vec3 size = Vec3(0.16, 0.10, 0.07);
-  int target_tets = 20000;  // the mesh has about this many tets (within ~15%)
+  int target_tets = 20000;  // the mesh has about this many tets (within ~10% when the shape allows)
 };
 
 // "builtin:box" -> kBox, ...; nullopt when `spec` is not a builtin name.
@@ -32,8 +32,8 @@ double analytic_volume(const BuiltinShapeDef& def);
 // scaled so that its enclosed volume equals the analytic one.
 SurfaceMesh make_builtin_surface(const BuiltinShapeDef& def);
 
-// The shape's tet mesh: meshes once at a smaller target to learn TetGen's
-// tets-per-volume under `quality`, then at the volume bound that hits the target.
+// The shape's tet mesh, with about target_tets tets: meshed at a volume
+// bound, re-aimed from the count obtained (at most three TetGen runs).
 TetMesh make_builtin_mesh(const BuiltinShapeDef& def, const TetrahedralizeOptions& quality);
 
 }  // namespace mtcut::engine

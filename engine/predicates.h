@@ -5,6 +5,7 @@
 // towards which (b - a) x (c - a) points.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products are defined here
 
 namespace mtcut::engine {
 

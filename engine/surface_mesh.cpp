@@ -4,7 +4,10 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <unordered_map>
 
@@ -42,6 +45,39 @@ struct QuietOpenMesh {
   }
 };
 
+// OpenMesh's ascii readers parse numbers with stream extraction, which stops
+// at "nan" or "inf" and silently drops or shifts vertices. Scan ascii files
+// first and name the line of any non-finite number. Binary files need no
+// scan: their NaNs arrive as values and are caught after reading.
+void reject_non_finite_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::getline(in, line);
+  const std::string ext = lower_extension(path);
+  const bool ascii = ext == ".obj" || ext == ".off" || (ext == ".stl" && line.rfind("solid", 0) == 0) ||
+                     (ext == ".ply" && [&] {
+                       std::string header;
+                       while (std::getline(in, header) && header.rfind("format", 0) != 0) {
+                       }
+                       return header.find("ascii") != std::string::npos;
+                     }());
+  if (!ascii) return;
+  in.clear();
+  in.seekg(0);
+  std::size_t number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    std::istringstream tokens(line);
+    std::string token;
+    while (tokens >> token) {
+      char* end = nullptr;
+      const double value = std::strtod(token.c_str(), &end);
+      if (end != token.c_str() && *end == '\0' && !std::isfinite(value))
+        throw InputError(describe_at(path, number, "non-finite coordinate '" + token + "'"));
+    }
+  }
+}
+
 }  // namespace
 
 double SurfaceMesh::enclosed_volume() const {
@@ -71,6 +107,7 @@ SurfaceMesh read_surface_file(const std::string& path) {
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": no such file");
   if (std::filesystem::file_size(path, ec) == 0) throw InputError(path + ": the file is empty");
 
+  reject_non_finite_text(path);
   OmMesh om;
   {
     QuietOpenMesh quiet;

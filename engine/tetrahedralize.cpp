@@ -82,19 +82,24 @@ std::string switches_for(const TetrahedralizeOptions& options, bool diagnose) {
   return s.str();
 }
 
-// Runs TetGen -d on the surface and names the triangles it finds intersecting.
-std::string describe_self_intersections(const SurfaceMesh& surface, const TetrahedralizeOptions& options) {
+// Runs TetGen -d on the surface and names the triangles it finds intersecting;
+// empty when there are none. This must run before meshing: TetGen 1.5.0
+// crashes (freeing its pools) instead of throwing on some self-intersecting
+// inputs, so they must never reach the meshing pass.
+std::string find_self_intersections(const SurfaceMesh& surface, const TetrahedralizeOptions& options) {
   tetgenio in, out;
   fill_plc(surface, in);
   tetgenbehavior behavior;
   std::string sw = switches_for(options, true);
-  if (!behavior.parse_commandline(sw.data())) return "self-intersecting surface";
+  if (!behavior.parse_commandline(sw.data())) return {};
   StdoutCapture capture(!options.verbose);
   try {
     tetrahedralize(&behavior, &in, &out);
   } catch (int) {
+    return "the surface intersects itself or is degenerate (TetGen's detection failed)";
   }
   capture.restore();
+  if (out.numberoftrifaces == 0) return {};
   // With -d TetGen returns the intersecting facets as triangles in out.trifacelist.
   std::set<std::array<int, 3>> faces;
   for (int i = 0; i < out.numberoftrifaces; ++i) {
@@ -132,6 +137,9 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& 
   if (options.max_volume < 0 || options.radius_edge_ratio < 0)
     throw InputError(source + ": max volume and quality bound must not be negative");
 
+  if (const std::string fault = find_self_intersections(surface, options); !fault.empty())
+    throw InputError(source + ": " + fault);
+
   tetgenio in, out;
   fill_plc(surface, in);
   tetgenbehavior behavior;
@@ -152,7 +160,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& 
   switch (code) {
     case 0: break;
     case 1: throw InputError(source + ": TetGen ran out of memory (raise --max-volume)");
-    case 3: throw InputError(source + ": " + describe_self_intersections(surface, options));
+    case 3: throw InputError(source + ": the surface intersects itself");
     case 4: throw InputError(source + ": the surface has features too small for TetGen's tolerance");
     case 5: throw InputError(source + ": the surface has two facets too close to each other");
     default: {

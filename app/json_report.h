@@ -1,0 +1,16 @@
+#pragma once
+// Reports as JSON (one object, stable key names) or as aligned text lines.
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "engine/mesh_stats.h"
+
+namespace mtcut::app {
+
+nlohmann::json to_json(const engine::MeshStats& stats);
+
+// Prints a flat JSON object as "key: value" lines for people.
+void print_human(std::ostream& out, const nlohmann::json& report);
+
+}  // namespace mtcut::app

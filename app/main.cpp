@@ -1,0 +1,32 @@
+// mtcut: the command line. Each subcommand lives in its own file and
+// registers itself here; errors a user can cause end as one line on stderr
+// and exit code 1.
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "app/mesh_command.h"
+#include "engine/input_error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "mtcut: progressive cutting of a multiresolution tetrahedral model in a mass-spring simulation.\n"
+      "Mesh an organ, build its multiresolution model, cut it, run scripted scenarios, benchmark."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "mtcut 0.1.0");
+
+  mtcut::app::register_mesh_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const mtcut::engine::InputError& e) {
+    std::cerr << "mtcut: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "mtcut: out of memory\n";
+    return 1;
+  }
+  return 0;
+}

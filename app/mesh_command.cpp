@@ -1,0 +1,103 @@
+#include "app/mesh_command.h"
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "app/json_report.h"
+#include "engine/input_error.h"
+#include "engine/io/mesh_file.h"
+#include "engine/mesh_loader.h"
+#include "engine/surface_mesh.h"
+
+namespace mtcut::app {
+namespace {
+
+struct MeshOptions {
+  std::string input;
+  std::string output;
+  engine::MeshLoadDef load;
+  std::vector<double> size;
+  bool json = false;
+};
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+void run_mesh(MeshOptions& options) {
+  if (!options.size.empty()) {
+    if (options.size.size() != 3) throw engine::InputError("--size: give three extents x,y,z");
+    options.load.builtin_size = engine::Vec3(options.size[0], options.size[1], options.size[2]);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const engine::LoadedMesh loaded = engine::load_mesh(options.input, options.load);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const engine::ValidationReport report = loaded.mesh.validate();
+  if (!report.ok()) throw engine::InputError(options.input + ": invalid tet mesh: " + report.problems.front());
+  if (!options.output.empty()) write_mesh_output(loaded.mesh, options.output);
+
+  nlohmann::json out = to_json(engine::compute_stats(loaded.mesh));
+  out["input"] = options.input;
+  out["source"] = loaded.kind;
+  out["seconds"] = seconds;
+  if (!options.output.empty()) out["output"] = options.output;
+  if (options.json) {
+    std::cout << out.dump() << "\n";
+  } else {
+    print_human(std::cout, out);
+  }
+}
+
+}  // namespace
+
+void write_mesh_output(const engine::TetMesh& mesh, const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".vtu") {
+    engine::write_vtu(mesh, path,
+                      {{"min_dihedral_deg", engine::tet_min_dihedral_deg(mesh)},
+                       {"radius_ratio", engine::tet_radius_ratio(mesh)}});
+  } else if (ext == ".node" || ext == ".ele") {
+    engine::write_tetgen(mesh, path);
+  } else if (engine::is_surface_file(path)) {
+    engine::write_surface_file(engine::extract_boundary(mesh), path);
+  } else {
+    throw engine::InputError(path + ": unknown output format (use .vtu, .node, .ele, .obj, .off, .stl or .ply)");
+  }
+}
+
+void register_mesh_command(CLI::App& app) {
+  auto options = std::make_shared<MeshOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "mesh",
+      "Mesh a surface or a builtin shape with TetGen, or read a tet mesh; validate it, write it, print statistics.\n"
+      "  mtcut mesh ../shared/meshes/liver2.obj --json\n"
+      "  mtcut mesh builtin:box --tets 100000 -o box.vtu");
+  cmd->add_option("input", options->input,
+                  "builtin:box | builtin:ellipsoid | builtin:cylinder, a surface (.obj .off .stl .ply) "
+                  "or a tet mesh (.node .ele .msh .vtk .vtu)")
+      ->required();
+  cmd->add_option("-o,--output", options->output,
+                  "write the mesh: .vtu (with quality), .node/.ele, or its boundary as .obj/.off/.stl/.ply");
+  cmd->add_option("--max-volume", options->load.meshing.max_volume, "largest tet volume when meshing (0 = none)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--quality", options->load.meshing.radius_edge_ratio,
+                  "TetGen radius-edge ratio bound when meshing (0 = no quality refinement)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--min-dihedral", options->load.meshing.min_dihedral_deg, "dihedral angle (degrees) TetGen aims for")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 30.0));
+  cmd->add_option("--tets", options->load.builtin_tets, "target tet count of a builtin shape")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--size", options->size, "extents x,y,z of a builtin shape in metres")->delimiter(',');
+  cmd->add_flag("--json", options->json, "print the statistics as one JSON object");
+  cmd->add_flag("--verbose", options->load.meshing.verbose, "show TetGen's own output");
+  cmd->callback([options] { run_mesh(*options); });
+}
+
+}  // namespace mtcut::app

@@ -1,0 +1,104 @@
+#include "engine/surface_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "engine/builtin_shapes.h"
+#include "engine/input_error.h"
+#include "tests/test_paths.h"
+
+namespace mtcut::engine {
+namespace {
+namespace fs = std::filesystem;
+
+class SurfaceFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("mtcut-surface-" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+  fs::path dir_;
+};
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST_F(SurfaceFiles, ReadsTheRealSurfaces) {
+  const SurfaceMesh liver = read_surface_file(test::shared_mesh("liver.obj"));
+  EXPECT_EQ(liver.positions.size(), 139u);  // the file lists 181, 42 of which no face uses
+  EXPECT_EQ(liver.triangles.size(), 274u);
+  EXPECT_EQ(liver.count_open_edges(), 0u);
+  EXPECT_GT(std::abs(liver.enclosed_volume()), 0);
+
+  const SurfaceMesh liver2 = read_surface_file(test::shared_mesh("liver2.obj"));
+  EXPECT_EQ(liver2.positions.size(), 1170u);
+  EXPECT_EQ(liver2.count_open_edges(), 0u);
+
+  const SurfaceMesh torus = read_surface_file(test::shared_mesh("torus.obj"));
+  EXPECT_EQ(torus.positions.size(), 800u);
+  EXPECT_EQ(torus.count_open_edges(), 0u);
+}
+
+TEST_F(SurfaceFiles, PolygonFacesAreTriangulated) {
+  const std::string file = write("quad.obj",
+                                 "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\n"
+                                 "f 1 4 3 2\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n");
+  const SurfaceMesh s = read_surface_file(file);
+  EXPECT_EQ(s.triangles.size(), 6u);
+  EXPECT_EQ(s.count_open_edges(), 0u);
+  EXPECT_NEAR(s.enclosed_volume(), 1.0 / 3.0, 1e-12);
+}
+
+TEST_F(SurfaceFiles, EveryFormatRoundTrips) {
+  BuiltinShapeDef def;
+  def.shape = BuiltinShape::kEllipsoid;
+  def.target_tets = 500;
+  const SurfaceMesh shape = make_builtin_surface(def);
+  for (const std::string ext : {".obj", ".off", ".stl", ".ply"}) {
+    const std::string file = path("shape" + ext);
+    write_surface_file(shape, file);
+    const SurfaceMesh back = read_surface_file(file);
+    EXPECT_EQ(back.triangles.size(), shape.triangles.size()) << ext;
+    EXPECT_EQ(back.count_open_edges(), 0u) << ext;
+    // STL stores floats; the rest keep enough digits.
+    EXPECT_NEAR(back.enclosed_volume(), shape.enclosed_volume(), 1e-5 * shape.enclosed_volume()) << ext;
+  }
+}
+
+TEST_F(SurfaceFiles, BadFilesGiveOneClearLine) {
+  EXPECT_NE(message_of([&] { read_surface_file(path("missing.obj")); }).find("missing.obj: no such file"),
+            std::string::npos);
+  const std::string empty = write("empty.obj", "");
+  EXPECT_NE(message_of([&] { read_surface_file(empty); }).find("empty.obj: the file is empty"), std::string::npos);
+  const std::string nan = write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n");
+  const std::string m = message_of([&] { read_surface_file(nan); });
+  EXPECT_NE(m.find("nan.obj: line 2: non-finite coordinate 'nan'"), std::string::npos) << m;
+  const std::string inf = write("inf.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 -inf 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+  EXPECT_NE(message_of([&] { read_surface_file(inf); }).find("inf.off: line 5"), std::string::npos);
+  const std::string nofaces = write("nofaces.obj", "v 0 0 0\nv 1 0 0\n");
+  EXPECT_NE(message_of([&] { read_surface_file(nofaces); }).find("no faces"), std::string::npos);
+}
+
+TEST_F(SurfaceFiles, FailedWriteLeavesNothingBehind) {
+  SurfaceMesh s = make_builtin_surface(BuiltinShapeDef{BuiltinShape::kBox, Vec3(1, 1, 1), 10});
+  EXPECT_THROW(write_surface_file(s, path("nodir/out.obj")), InputError);
+  EXPECT_THROW(write_surface_file(s, path("out.xyz")), InputError);
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+}  // namespace
+}  // namespace mtcut::engine

@@ -1,0 +1,116 @@
+#include "engine/tet_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include "engine/input_error.h"
+#include "engine/tet_adjacency.h"
+
+namespace mtcut::engine {
+namespace {
+
+// A unit cube split into 6 tets around the diagonal 0-7 (Kuhn triangulation).
+TetMesh kuhn_cube() {
+  std::vector<Vec3> p;
+  for (int i = 0; i < 8; ++i) p.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  const std::vector<std::array<std::int64_t, 4>> tets = {
+      {0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}};
+  return make_tet_mesh(p, tets, "cube");
+}
+
+bool mentions(const ValidationReport& r, const std::string& text) {
+  for (const auto& p : r.problems)
+    if (p.find(text) != std::string::npos) return true;
+  return false;
+}
+
+TEST(TetMesh, KuhnCubeIsValidWithUnitVolume) {
+  const TetMesh mesh = kuhn_cube();
+  const auto report = mesh.validate();
+  EXPECT_TRUE(report.ok()) << report.summary();
+  EXPECT_NEAR(mesh.total_volume(), 1.0, 1e-15);
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) EXPECT_GT(mesh.volume(TetId(t)), 0);
+}
+
+TEST(TetMesh, AdjacencyOfKuhnCube) {
+  const TetMesh mesh = kuhn_cube();
+  const TetAdjacency adj = build_adjacency(mesh);
+  EXPECT_EQ(adj.boundary.size(), 12u);
+  EXPECT_EQ(adj.non_manifold_faces, 0u);
+  std::size_t interior = 0;
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      const TetId u = adj.neighbors[t][f];
+      if (!u.valid()) continue;
+      ++interior;
+      // Symmetric: u sees t across one of its faces.
+      const auto& back = adj.neighbors[u.index()];
+      EXPECT_NE(std::find(back.begin(), back.end(), TetId(t)), back.end());
+    }
+  EXPECT_EQ(interior, 12u);  // 6 interior faces, seen from both sides
+}
+
+TEST(TetMesh, MakeTetMeshFixesOrientation) {
+  std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const TetMesh mesh = make_tet_mesh(p, {{0, 2, 1, 3}}, "flipped");
+  EXPECT_GT(mesh.volume(TetId(0)), 0);
+  EXPECT_TRUE(mesh.validate().ok());
+}
+
+TEST(TetMesh, MakeTetMeshRejectsBadInput) {
+  std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}};
+  EXPECT_THROW(make_tet_mesh(p, {{0, 1, 2, 9}}, "x"), InputError);
+  EXPECT_THROW(make_tet_mesh(p, {{0, 1, 2, 4}}, "x"), InputError);  // coplanar
+  p[4] = Vec3(std::nan(""), 0, 0);
+  try {
+    make_tet_mesh(p, {{0, 1, 2, 3}}, "bad.node");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.node: vertex 4"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TetMesh, ValidateNamesInvertedTets) {
+  TetMesh mesh = kuhn_cube();
+  std::swap(mesh.tets[2][0], mesh.tets[2][1]);
+  const auto report = mesh.validate();
+  EXPECT_FALSE(report.ok());
+  EXPECT_TRUE(mentions(report, "tet 2 is negatively oriented")) << report.summary();
+}
+
+TEST(TetMesh, ValidateNamesDuplicatesAndBadIds) {
+  TetMesh mesh = kuhn_cube();
+  mesh.tets.push_back(mesh.tets[0]);
+  auto report = mesh.validate();
+  EXPECT_TRUE(mentions(report, "tets 0 and 6 are duplicates")) << report.summary();
+  EXPECT_TRUE(mentions(report, "more than two tets")) << report.summary();
+
+  mesh = kuhn_cube();
+  mesh.tets[1][2] = VertId(42);
+  report = mesh.validate();
+  EXPECT_TRUE(mentions(report, "tet 1 refers to vertex 42")) << report.summary();
+}
+
+TEST(TetMesh, ValidateNamesDegenerateAndOverlappingTets) {
+  TetMesh mesh = kuhn_cube();
+  mesh.positions[7] = Vec3(0.5, 0.5, 0);  // flattens the tets that share 0 and 7 in z = 0
+  auto report = mesh.validate();
+  EXPECT_FALSE(report.ok());
+  EXPECT_TRUE(mentions(report, "degenerate") || mentions(report, "negatively")) << report.summary();
+
+  // Two tets on the same side of their shared face overlap.
+  std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.2, 0.5}};
+  mesh = make_tet_mesh(p, {{0, 1, 2, 3}, {0, 1, 2, 4}}, "overlap");
+  report = mesh.validate();
+  EXPECT_TRUE(mentions(report, "overlap")) << report.summary();
+}
+
+TEST(TetMesh, ValidateNamesNonManifoldBoundary) {
+  // Two tets touching at a single edge: the boundary is pinched there.
+  std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, -1, 0}, {0, 0, -1}};
+  const TetMesh mesh = make_tet_mesh(p, {{0, 1, 2, 3}, {0, 1, 4, 5}}, "pinched");
+  const auto report = mesh.validate();
+  EXPECT_TRUE(mentions(report, "not manifold")) << report.summary();
+}
+
+}  // namespace
+}  // namespace mtcut::engine

@@ -1,0 +1,117 @@
+#include "engine/tetrahedralize.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "engine/builtin_shapes.h"
+#include "engine/input_error.h"
+#include "engine/mesh_loader.h"
+#include "engine/mesh_stats.h"
+#include "tests/test_paths.h"
+
+namespace mtcut::engine {
+namespace {
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+SurfaceMesh unit_box() { return make_builtin_surface(BuiltinShapeDef{BuiltinShape::kBox, Vec3(1, 1, 1), 10}); }
+
+TEST(Tetrahedralize, RealSurfacesGiveValidMeshesOfTheSameVolume) {
+  for (const std::string name : {"liver.obj", "liver2.obj", "torus.obj"}) {
+    const SurfaceMesh surface = read_surface_file(test::shared_mesh(name));
+    const TetMesh mesh = tetrahedralize(surface, {}, name);
+    const auto report = mesh.validate();
+    EXPECT_TRUE(report.ok()) << name << ": " << report.summary();
+    // TetGen treats facets coplanar within its tolerance (-T, 1e-8) as one
+    // and may re-triangulate them, which moves the volume by ~1e-7 relative.
+    EXPECT_NEAR(mesh.total_volume(), std::abs(surface.enclosed_volume()), 1e-6 * mesh.total_volume()) << name;
+    EXPECT_GT(compute_stats(mesh).min_dihedral_deg, 0.5) << name;
+  }
+}
+
+TEST(Tetrahedralize, MaxVolumeBoundsEveryTet) {
+  TetrahedralizeOptions options;
+  options.max_volume = 0.001;
+  const TetMesh mesh = tetrahedralize(unit_box(), options, "box");
+  EXPECT_GE(mesh.num_tets(), 1000u);
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) EXPECT_LE(mesh.volume(TetId(t)), 0.001 * (1 + 1e-9));
+  EXPECT_NEAR(mesh.total_volume(), 1.0, 1e-12);
+}
+
+TEST(Tetrahedralize, QualityRaisesTheSmallestAngle) {
+  TetrahedralizeOptions rough;
+  rough.radius_edge_ratio = 0;
+  rough.max_volume = 0;
+  const SurfaceMesh liver = read_surface_file(test::shared_mesh("liver2.obj"));
+  TetrahedralizeOptions good;
+  good.min_dihedral_deg = 12;
+  EXPECT_GT(compute_stats(tetrahedralize(liver, good, "liver2")).min_dihedral_deg,
+            compute_stats(tetrahedralize(liver, rough, "liver2")).min_dihedral_deg);
+}
+
+TEST(Tetrahedralize, SurfaceWithAHoleIsRejected) {
+  SurfaceMesh box = unit_box();
+  box.triangles.pop_back();
+  const std::string m = message_of([&] { tetrahedralize(box, {}, "holey.obj"); });
+  EXPECT_NE(m.find("holey.obj: the surface is not closed"), std::string::npos) << m;
+}
+
+TEST(Tetrahedralize, SelfIntersectingSurfaceNamesTheFaces) {
+  // Two closed boxes that overlap, given as one surface.
+  SurfaceMesh a = unit_box();
+  const SurfaceMesh b = unit_box();
+  const auto offset = static_cast<std::int32_t>(a.positions.size());
+  for (const auto& p : b.positions) a.positions.push_back(p + Vec3(0.5, 0.3, 0.2));
+  for (const auto& t : b.triangles) a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const std::string m = message_of([&] { tetrahedralize(a, {}, "twoboxes.obj"); });
+  EXPECT_NE(m.find("twoboxes.obj: the surface intersects itself"), std::string::npos) << m;
+  EXPECT_NE(m.find("triangles"), std::string::npos) << m;
+}
+
+TEST(Tetrahedralize, TetGenChatterStaysOffStdout) {
+  testing::internal::CaptureStdout();
+  (void)tetrahedralize(unit_box(), {}, "box");
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+}
+
+TEST(Tetrahedralize, NegativeOptionsAreRejected) {
+  TetrahedralizeOptions options;
+  options.max_volume = -1;
+  EXPECT_THROW(tetrahedralize(unit_box(), options, "box"), InputError);
+}
+
+TEST(MeshLoader, LoadsEveryGoodSharedMeshAndRejectsTheBrokenOnes) {
+  MeshLoadDef def;
+  for (const auto& entry : std::filesystem::directory_iterator(test::shared_mesh(""))) {
+    const std::string path = entry.path().string();
+    const std::string name = entry.path().filename().string();
+    if (name == "README.md") continue;
+    if (name.find("_broken") != std::string::npos) {
+      const std::string m = message_of([&] { load_mesh(path, def); });
+      EXPECT_NE(m, "no error") << name;
+      EXPECT_NE(m.find(name), std::string::npos) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    } else {
+      const LoadedMesh loaded = load_mesh(path, def);
+      EXPECT_GT(loaded.mesh.num_tets(), 0u) << name;
+      const auto report = loaded.mesh.validate();
+      EXPECT_TRUE(report.ok()) << name << ": " << report.summary();
+    }
+  }
+}
+
+TEST(MeshLoader, UnknownFormatsAndShapesAreRejected) {
+  EXPECT_NE(message_of([] { load_mesh("organ.xyz", {}); }).find("organ.xyz: unknown mesh format"), std::string::npos);
+  EXPECT_NE(message_of([] { load_mesh("builtin:heart", {}); }).find("unknown built-in shape"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mtcut::engine
