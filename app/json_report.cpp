@@ -5,7 +5,7 @@
 
 namespace mtcut::app {
 
-nlohmann::json to_json(const engine::MeshStats& stats) {
+nlohmann::ordered_json to_json(const engine::MeshStats& stats) {
   return {{"vertices", stats.vertices},
           {"tets", stats.tets},
           {"boundary_faces", stats.boundary_faces},
@@ -15,7 +15,7 @@ nlohmann::json to_json(const engine::MeshStats& stats) {
           {"min_radius_ratio", stats.min_radius_ratio}};
 }
 
-void print_human(std::ostream& out, const nlohmann::json& report) {
+void print_human(std::ostream& out, const nlohmann::ordered_json& report) {
   std::size_t width = 0;
   for (const auto& [key, value] : report.items()) width = std::max(width, key.size());
   for (const auto& [key, value] : report.items()) {

@@ -8,9 +8,9 @@
 
 namespace mtcut::app {
 
-nlohmann::json to_json(const engine::MeshStats& stats);
+nlohmann::ordered_json to_json(const engine::MeshStats& stats);
 
 // Prints a flat JSON object as "key: value" lines for people.
-void print_human(std::ostream& out, const nlohmann::json& report);
+void print_human(std::ostream& out, const nlohmann::ordered_json& report);
 
 }  // namespace mtcut::app

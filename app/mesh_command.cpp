@@ -40,9 +40,8 @@ void run_mesh(MeshOptions& options) {
   if (!report.ok()) throw engine::InputError(options.input + ": invalid tet mesh: " + report.problems.front());
   if (!options.output.empty()) write_mesh_output(loaded.mesh, options.output);
 
-  nlohmann::json out = to_json(engine::compute_stats(loaded.mesh));
-  out["input"] = options.input;
-  out["source"] = loaded.kind;
+  nlohmann::ordered_json out = {{"input", options.input}, {"source", loaded.kind}};
+  out.update(to_json(engine::compute_stats(loaded.mesh)));
   out["seconds"] = seconds;
   if (!options.output.empty()) out["output"] = options.output;
   if (options.json) {
