@@ -109,6 +109,15 @@ bool LineReader::next_token(std::string_view& token) {
   return true;
 }
 
+bool LineReader::peek_token(std::string_view& token) {
+  const std::size_t pos = pos_, pos_line = pos_line_, line = line_;
+  const bool found = next_token(token);
+  pos_ = pos;
+  pos_line_ = pos_line;
+  line_ = line;
+  return found;
+}
+
 std::string_view LineReader::expect_token(const std::string& what) {
   std::string_view token;
   if (!next_token(token)) {

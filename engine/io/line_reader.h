@@ -46,6 +46,8 @@ class LineReader {
   bool next_line(std::string_view& line);
   // The next token, crossing line ends; false at the end.
   bool next_token(std::string_view& token);
+  // The next token without moving past it; false at the end.
+  bool peek_token(std::string_view& token);
   // The same, where the end of the file is a fault: "unexpected end of the
   // file (expected <what>)".
   std::string_view expect_token(const std::string& what);

@@ -31,8 +31,9 @@ RawMesh read_volume_file(const std::string& path) {
     const auto [node_path, ele_path] = tetgen_pair(path);
     return read_tetgen(node_path, ele_path);
   }
-  if (ext == ".msh" || ext == ".vtk" || ext == ".vtu")
-    throw InputError(path + ": reading " + ext + " files is not available yet");
+  if (ext == ".msh") return read_gmsh(path);
+  if (ext == ".vtk") return read_vtk_legacy(path);
+  if (ext == ".vtu") return read_vtu(path);
   throw InputError(path + ": unknown tet-mesh format '" + ext + "' (expected .node, .ele, .msh, .vtk or .vtu)");
 }
 

@@ -1,0 +1,112 @@
+#pragma once
+// Helpers for the mesh file tests: a temporary folder that cleans up after
+// itself, writing hand-made files into it, a small valid tet mesh, and an
+// expectation that a call fails with an InputError naming given things.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <initializer_list>
+#include <string>
+
+#include "engine/input_error.h"
+#include "engine/io/mesh_file.h"
+#include "engine/tet_mesh.h"
+
+namespace mtcut::engine::test {
+
+// A fresh folder under the system temp folder, removed with its contents.
+class TempDir {
+ public:
+  TempDir() {
+    static std::atomic<int> counter{0};
+    path_ = std::filesystem::temp_directory_path() /
+            ("mtcut-io-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  // The path of name inside the folder.
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+  // Writes bytes to name inside the folder; returns its path.
+  std::string write(const std::string& name, const std::string& bytes) const {
+    const std::string p = file(name);
+    std::ofstream out(p, std::ios::binary);
+    out << bytes;
+    return p;
+  }
+  // Every entry in the folder, by name.
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(path_)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// Expects call() to throw an InputError whose message holds every part,
+// and to be a single line.
+inline void expect_input_error(const std::function<void()>& call, std::initializer_list<std::string> parts) {
+  try {
+    call();
+    ADD_FAILURE() << "no InputError thrown (expected one mentioning " << *parts.begin() << ")";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    for (const std::string& part : parts)
+      EXPECT_NE(message.find(part), std::string::npos) << "message: " << message << "\nmissing: " << part;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "message is not one line: " << message;
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "threw something other than InputError: " << e.what();
+  }
+}
+
+// Reads path and expects an InputError naming the file and every part.
+inline void expect_read_error(const std::string& path, std::initializer_list<std::string> parts) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  expect_input_error([&] { read_volume_file(path); }, {name});
+  expect_input_error([&] { read_volume_file(path); }, parts);
+}
+
+// A unit cube split into 6 positive tets around the diagonal 0-7.
+inline TetMesh kuhn_cube() {
+  std::vector<Vec3> p;
+  for (int i = 0; i < 8; ++i) p.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  const std::vector<std::array<std::int64_t, 4>> tets = {
+      {0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}};
+  return make_tet_mesh(p, tets, "cube");
+}
+
+// The six Kuhn tets of kuhn_cube as raw ids, for comparing with RawMesh.
+inline std::vector<std::array<std::int64_t, 4>> raw_tets(const TetMesh& mesh) {
+  std::vector<std::array<std::int64_t, 4>> out;
+  for (const Tet& t : mesh.tets) out.push_back({t[0].value, t[1].value, t[2].value, t[3].value});
+  return out;
+}
+
+// Expects a raw tet mesh to make a valid TetMesh of positive volume.
+inline TetMesh expect_valid_tets(const RawMesh& raw, const std::string& source) {
+  TetMesh mesh = make_tet_mesh(raw.positions, raw.tets, source);
+  const auto report = mesh.validate();
+  EXPECT_TRUE(report.ok()) << report.summary();
+  EXPECT_GT(mesh.total_volume(), 0.0);
+  return mesh;
+}
+
+}  // namespace mtcut::engine::test
