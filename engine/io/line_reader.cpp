@@ -85,7 +85,10 @@ std::string quote_token(std::string_view token) {
 LineReader::LineReader(std::string source, std::string_view text) : source_(std::move(source)), text_(text) {}
 
 bool LineReader::next_line(std::string_view& line) {
-  if (pos_ >= text_.size()) return false;
+  if (pos_ >= text_.size()) {
+    line_ = pos_line_;  // faults at the end point past the last line
+    return false;
+  }
   const std::size_t newline = text_.find('\n', pos_);
   const std::size_t end = newline == std::string_view::npos ? text_.size() : newline;
   line = text_.substr(pos_, end - pos_);
@@ -101,7 +104,10 @@ bool LineReader::next_token(std::string_view& token) {
     if (text_[pos_] == '\n') ++pos_line_;
     ++pos_;
   }
-  if (pos_ >= text_.size()) return false;
+  if (pos_ >= text_.size()) {
+    line_ = pos_line_;
+    return false;
+  }
   const std::size_t start = pos_;
   while (pos_ < text_.size() && !is_space(text_[pos_])) ++pos_;
   token = text_.substr(start, pos_ - start);

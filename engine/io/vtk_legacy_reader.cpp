@@ -89,20 +89,42 @@ class VtkLegacyReader {
     reader_.fail(what);
   }
 
+  std::string_view token(const std::string& what) {
+    std::string_view t;
+    if (!reader_.next_token(t)) fail_here("unexpected end of the file (expected " + what + ")");
+    return t;
+  }
+
+  std::int64_t integer(std::string_view t, const std::string& what) const {
+    std::int64_t value = 0;
+    if (!parse_int(t, value)) fail_here(what + " " + quote_token(t) + " is not an integer");
+    return value;
+  }
+
+  // A count no larger than the bytes left, so that no corrupt count can
+  // make the reader allocate more than the file could fill.
   std::size_t read_count(const std::string& what) {
-    return reader_.to_count(reader_.expect_token(what), what, reader_.remaining());
+    const std::string_view t = token(what);
+    const std::int64_t n = integer(t, what);
+    if (n < 0) fail_here(what + " " + quote_token(t) + " is negative");
+    if (static_cast<std::uint64_t>(n) > reader_.remaining())
+      fail_here(what + " " + quote_token(t) + " is more than the file can hold (truncated or corrupt file)");
+    return static_cast<std::size_t>(n);
   }
 
   ScalarType read_type(const std::string& what) {
-    const std::string_view name = reader_.expect_token("the data type of " + what);
+    const std::string_view name = token("the data type of " + what);
     const auto type = legacy_vtk_type(name);
-    if (!type) reader_.fail("unsupported data type " + quote_token(name) + " for " + what);
+    if (!type) fail_here("unsupported data type " + quote_token(name) + " for " + what);
     return *type;
   }
 
   // In a binary file, the n values of a block: right after the keyword line.
   const unsigned char* binary_block(std::size_t n, ScalarType type, const std::string& what) {
     reader_.skip_rest_of_line();
+    if (n * type.size > reader_.remaining())
+      fail_here("the file is truncated: " + what + " needs " + std::to_string(n * type.size) + " bytes, only " +
+                std::to_string(reader_.remaining()) + " are left");
     const std::string_view bytes = reader_.take_bytes(n * type.size, what);
     after_binary_ = true;
     return reinterpret_cast<const unsigned char*>(bytes.data());
@@ -119,7 +141,10 @@ class VtkLegacyReader {
           fail_here(what + ": value " + std::to_string(i) + " is out of range");
       return values;
     }
-    for (std::size_t i = 0; i < n; ++i) values[i] = reader_.expect_int(what + " (value " + std::to_string(i) + " of " + std::to_string(n) + ")");
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string where = what + " (value " + std::to_string(i) + " of " + std::to_string(n) + ")";
+      values[i] = integer(token(where), where);
+    }
     return values;
   }
 
@@ -150,7 +175,7 @@ class VtkLegacyReader {
         }
     }
     has_points_ = true;
-    last_ = "the " + std::to_string(n) + " points of POINTS";
+    last_ = "the " + std::to_string(n) + " points that POINTS declares";
   }
 
   // A cell block after its keyword: classic "n size" then size ints
@@ -197,8 +222,8 @@ class VtkLegacyReader {
   }
 
   void expect_keyword(const std::string& key) {
-    const std::string_view token = reader_.expect_token(key);
-    if (upper(token) != key) fail_here("expected " + key + ", found " + quote_token(token));
+    const std::string_view t = token(key);
+    if (upper(t) != key) fail_here("expected " + key + ", found " + quote_token(t));
   }
 
   void check_ids(const CellBlock& block, const std::string& key) {
@@ -239,15 +264,15 @@ class VtkLegacyReader {
 
   // FIELD name n, then n arrays "name components tuples type" and their values.
   void skip_field() {
-    reader_.expect_token("the FIELD name");
+    token("the FIELD name");
     const std::size_t arrays = read_count("the number of FIELD arrays");
     for (std::size_t a = 0; a < arrays; ++a) {
-      std::string_view token;
-      while (reader_.peek_token(token) && upper(token) == "METADATA") {
-        reader_.next_token(token);
+      std::string_view next;
+      while (reader_.peek_token(next) && upper(next) == "METADATA") {
+        reader_.next_token(next);
         skip_metadata();
       }
-      const std::string name(reader_.expect_token("a FIELD array name"));
+      const std::string name(token("a FIELD array name"));
       if (name == "NULL_ARRAY") continue;
       const std::size_t components = read_count("the number of components of " + name);
       const std::size_t tuples = read_count("the number of tuples of " + name);
@@ -259,7 +284,7 @@ class VtkLegacyReader {
         binary_block(n, type, "FIELD array " + name);
       } else {
         for (std::size_t i = 0; i < n; ++i) {
-          const std::string_view value = reader_.expect_token("a value of FIELD array " + name);
+          const std::string_view value = token("a value of FIELD array " + name);
           double v = 0;
           if (!parse_real(value, v)) reader_.fail("FIELD array " + name + ": " + quote_token(value) + " is not a number");
         }

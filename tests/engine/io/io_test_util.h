@@ -1,17 +1,21 @@
 #pragma once
 // Helpers for the mesh file tests: a temporary folder that cleans up after
-// itself, writing hand-made files into it, a small valid tet mesh, and an
-// expectation that a call fails with an InputError naming given things.
+// itself, writing hand-made files into it, a small valid tet mesh, the
+// expectation that a call fails with an InputError naming given things, and
+// a cap on file sizes that makes a write fail half-way.
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "engine/input_error.h"
 #include "engine/io/mesh_file.h"
@@ -63,10 +67,10 @@ inline std::string read_bytes(const std::string& path) {
 
 // Expects call() to throw an InputError whose message holds every part,
 // and to be a single line.
-inline void expect_input_error(const std::function<void()>& call, std::initializer_list<std::string> parts) {
+inline void expect_input_error(const std::function<void()>& call, const std::vector<std::string>& parts) {
   try {
     call();
-    ADD_FAILURE() << "no InputError thrown (expected one mentioning " << *parts.begin() << ")";
+    ADD_FAILURE() << "no InputError thrown" << (parts.empty() ? std::string() : " (expected one mentioning " + parts.front() + ")");
   } catch (const InputError& e) {
     const std::string message = e.what();
     for (const std::string& part : parts)
@@ -78,10 +82,34 @@ inline void expect_input_error(const std::function<void()>& call, std::initializ
 }
 
 // Reads path and expects an InputError naming the file and every part.
-inline void expect_read_error(const std::string& path, std::initializer_list<std::string> parts) {
-  const std::string name = std::filesystem::path(path).filename().string();
-  expect_input_error([&] { read_volume_file(path); }, {name});
-  expect_input_error([&] { read_volume_file(path); }, parts);
+inline void expect_read_error(const std::string& path, const std::vector<std::string>& parts) {
+  std::vector<std::string> all = parts;
+  all.push_back(std::filesystem::path(path).filename().string());
+  expect_input_error([&] { read_volume_file(path); }, all);
+}
+
+// A broken file: its name, its text, and what the message must mention.
+struct BadFile {
+  std::string name, text;
+  std::vector<std::string> parts;
+};
+
+// Writes each file into a fresh folder and expects read_volume_file to
+// reject it naming the file and each part.
+inline void expect_all_rejected(const std::vector<BadFile>& files) {
+  TempDir dir;
+  for (const BadFile& f : files) {
+    SCOPED_TRACE(f.name);
+    expect_read_error(dir.write(f.name, f.text), f.parts);
+  }
+}
+
+// text with the first from replaced by to (which must be there).
+inline std::string replace_once(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "not in the text: " << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
 }
 
 // A unit cube split into 6 positive tets around the diagonal 0-7.
@@ -108,5 +136,28 @@ inline TetMesh expect_valid_tets(const RawMesh& raw, const std::string& source) 
   EXPECT_GT(mesh.total_volume(), 0.0);
   return mesh;
 }
+
+// Caps the size of files this process may write, for one scope; writes past
+// the cap fail (EFBIG) instead of raising SIGXFSZ.
+class FileSizeCap {
+ public:
+  explicit FileSizeCap(rlim_t bytes) {
+    previous_handler_ = std::signal(SIGXFSZ, SIG_IGN);
+    getrlimit(RLIMIT_FSIZE, &previous_);
+    rlimit cap = previous_;
+    cap.rlim_cur = bytes;
+    setrlimit(RLIMIT_FSIZE, &cap);
+  }
+  ~FileSizeCap() {
+    setrlimit(RLIMIT_FSIZE, &previous_);
+    std::signal(SIGXFSZ, previous_handler_);
+  }
+  FileSizeCap(const FileSizeCap&) = delete;
+  FileSizeCap& operator=(const FileSizeCap&) = delete;
+
+ private:
+  rlimit previous_{};
+  void (*previous_handler_)(int) = nullptr;
+};
 
 }  // namespace mtcut::engine::test
