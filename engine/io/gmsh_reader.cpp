@@ -1,6 +1,7 @@
 // Gmsh .msh reader, ascii only: format 1 ($NOD/$ELM), 2.x and 4.0/4.1
 // ($MeshFormat, $Nodes, $Elements; every other section is skipped). Tets are
-// element type 4, triangles type 2; other element types are skipped. Node
+// element type 4 (or 11, 10 nodes), triangles type 2 (or 9, 6 nodes); other
+// element types are skipped. Node
 // tags (any positive numbers, in any order) become 0-based ids in the order
 // the nodes appear. Every section is read line by line and its declared
 // counts are checked against the lines it holds.
@@ -14,15 +15,12 @@
 namespace mtcut::engine {
 namespace {
 
-constexpr std::int64_t kGmshTriangle = 2;
-constexpr std::int64_t kGmshTet = 4;
-
 enum class Version { kNone, k1, k2, k40, k41 };
 
 // An element kept until all nodes are known: its node tags and its line.
 struct PendingElement {
-  std::array<std::int64_t, 4> tags{};
-  int corners = 0;  // 3 or 4
+  std::array<std::int64_t, 10> tags{};  // corners first
+  CellShape shape;
   std::size_t line = 0;
 };
 
@@ -118,17 +116,16 @@ class GmshReader {
     positions_.emplace_back(reader_.to_real(x, what), reader_.to_real(y, what), reader_.to_real(z, what));
   }
 
-  // An element of known type whose node tags are tokens[first..].
-  void add_element(std::int64_t type, const std::vector<std::string_view>& tokens, std::size_t first,
+  // An element of a kept type whose node tags are tokens[first..].
+  void add_element(CellShape shape, const std::vector<std::string_view>& tokens, std::size_t first,
                    std::string_view id) {
-    const std::size_t corners = type == kGmshTet ? 4 : 3;
-    if (tokens.size() - first != corners)
-      reader_.fail("element " + std::string(id) + " (" + (corners == 4 ? "a tet" : "a triangle") + ") has " +
-                   std::to_string(tokens.size() - first) + " nodes, expected " + std::to_string(corners));
+    if (tokens.size() - first != shape.points)
+      reader_.fail("element " + std::string(id) + " (" + (shape.corners == 4 ? "a tet" : "a triangle") + ") has " +
+                   std::to_string(tokens.size() - first) + " nodes, expected " + std::to_string(shape.points));
     PendingElement e;
-    e.corners = static_cast<int>(corners);
+    e.shape = shape;
     e.line = reader_.line();
-    for (std::size_t k = 0; k < corners; ++k) e.tags[k] = reader_.to_int(tokens[first + k], "the node tag");
+    for (std::size_t k = 0; k < shape.points; ++k) e.tags[k] = reader_.to_int(tokens[first + k], "the node tag");
     elements_.push_back(e);
   }
 
@@ -165,7 +162,7 @@ class GmshReader {
         if (tokens.size() < 3 + tags) reader_.fail("element " + std::string(tokens[0]) + " has fewer tags than it declares");
         first = 3 + tags;
       }
-      if (type == kGmshTet || type == kGmshTriangle) add_element(type, tokens, first, tokens[0]);
+      if (const CellShape shape = gmsh_cell_shape(type); shape.points != 0) add_element(shape, tokens, first, tokens[0]);
     }
     expect_end(end, section, n, "elements");
   }
@@ -217,13 +214,13 @@ class GmshReader {
     for (std::size_t b = 0; b < blocks; ++b) {
       const auto block = data_line("$Elements", "block " + std::to_string(b) + " of " + std::to_string(blocks));
       if (block.size() != 4) reader_.fail("an element block header needs 4 values");
-      const std::int64_t type = reader_.to_int(block[2], "the element type");
+      const CellShape shape = gmsh_cell_shape(reader_.to_int(block[2], "the element type"));
       const std::size_t count = reader_.to_count(block[3], "the number of elements in the block", text_size_);
       if (count > n - read)
         reader_.fail("the element blocks hold more elements than the " + std::to_string(n) + " declared");
       for (std::size_t i = 0; i < count; ++i) {
         const auto tokens = data_line("$Elements", element_progress(n, read + i));
-        if (type == kGmshTet || type == kGmshTriangle) add_element(type, tokens, 1, tokens[0]);
+        if (shape.points != 0) add_element(shape, tokens, 1, tokens[0]);
       }
       read += count;
     }
@@ -267,8 +264,8 @@ class GmshReader {
   RawMesh finish() {
     RawMesh raw;
     for (const PendingElement& e : elements_) {
-      std::array<std::int64_t, 4> ids{};
-      for (int k = 0; k < e.corners; ++k) {
+      std::array<std::int64_t, 10> ids{};
+      for (std::size_t k = 0; k < e.shape.points; ++k) {
         const auto it = index_of_tag_.find(e.tags[k]);
         if (it == index_of_tag_.end())
           throw InputError(describe_at(reader_.source(), e.line,
@@ -276,7 +273,7 @@ class GmshReader {
                                            ", which the node section does not define"));
         ids[k] = it->second;
       }
-      if (e.corners == 4) raw.tets.push_back(ids);
+      if (e.shape.corners == 4) raw.tets.push_back({ids[0], ids[1], ids[2], ids[3]});
       else raw.triangles.push_back({ids[0], ids[1], ids[2]});
     }
     raw.positions = std::move(positions_);

@@ -1,7 +1,7 @@
 // Legacy VTK .vtk reader (file versions 1.0 to 5.1), ASCII or BINARY (big-
 // endian values right after each keyword line). DATASET UNSTRUCTURED_GRID:
-// POINTS, CELLS, CELL_TYPES; tets are type 10, triangles type 5, other
-// cells are skipped. DATASET POLYDATA: POLYGONS become triangles (polygons
+// POINTS, CELLS, CELL_TYPES; tets are type 10 (or 24, quadratic), triangles
+// type 5 (or 22), other cells are skipped. DATASET POLYDATA: POLYGONS become triangles (polygons
 // with more corners are fanned), TRIANGLE_STRIPS are split, VERTICES and
 // LINES are skipped. Version 5.x cell blocks (OFFSETS + CONNECTIVITY) are
 // read as well as the classic ones. A FIELD block is skipped; POINT_DATA and
@@ -16,9 +16,6 @@
 
 namespace mtcut::engine {
 namespace {
-
-constexpr std::int64_t kVtkTriangle = 5;
-constexpr std::int64_t kVtkTetra = 10;
 
 std::string upper(std::string_view s) {
   std::string out(s);
@@ -310,12 +307,12 @@ class VtkLegacyReader {
         reader_.fail_file("CELL_TYPES has " + std::to_string(types_.size()) + " values but CELLS has " +
                           std::to_string(cells_.size()) + " cells");
       for (std::size_t c = 0; c < cells_.size(); ++c) {
-        const std::size_t need = types_[c] == kVtkTetra ? 4 : types_[c] == kVtkTriangle ? 3 : 0;
-        if (need == 0) continue;
-        if (cells_.corners(c) != need)
+        const CellShape shape = vtk_cell_shape(types_[c]);
+        if (shape.points == 0) continue;
+        if (cells_.corners(c) != shape.points)
           reader_.fail_file("cell " + std::to_string(c) + " has type " + std::to_string(types_[c]) + " but " +
-                            std::to_string(cells_.corners(c)) + " points (expected " + std::to_string(need) + ")");
-        if (need == 4) raw.tets.push_back({cells_.id(c, 0), cells_.id(c, 1), cells_.id(c, 2), cells_.id(c, 3)});
+                            std::to_string(cells_.corners(c)) + " points (expected " + std::to_string(shape.points) + ")");
+        if (shape.corners == 4) raw.tets.push_back({cells_.id(c, 0), cells_.id(c, 1), cells_.id(c, 2), cells_.id(c, 3)});
         else raw.triangles.push_back({cells_.id(c, 0), cells_.id(c, 1), cells_.id(c, 2)});
       }
     } else {

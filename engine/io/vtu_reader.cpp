@@ -3,7 +3,8 @@
 // (raw or base64, at an offset past the '_' of <AppendedData>), in either
 // byte order, of any VTK scalar type. Compressed files are rejected. Points
 // must have 3 components; cells come from connectivity/offsets/types (type
-// 10 = tet, 5 = triangle, others skipped). Several pieces are concatenated.
+// 10 = tet, 5 = triangle, their quadratic 24 and 22 by their corners, others
+// skipped). Several pieces are concatenated.
 // Every declared count (NumberOfPoints, NumberOfCells, binary headers) is
 // checked against the data before anything is allocated from it.
 
@@ -17,9 +18,6 @@
 
 namespace mtcut::engine {
 namespace {
-
-constexpr std::int64_t kVtkTriangle = 5;
-constexpr std::int64_t kVtkTetra = 10;
 
 enum class Format { kAscii, kBinary, kAppended };
 
@@ -316,13 +314,14 @@ class VtuReader {
                                             ", but the piece has " + std::to_string(n_points) + " points");
       }
       const std::int64_t corners = end - start;
-      const std::int64_t need = types[c] == kVtkTetra ? 4 : types[c] == kVtkTriangle ? 3 : 0;
+      const CellShape shape = vtk_cell_shape(types[c]);
+      const auto need = static_cast<std::int64_t>(shape.points);
       if (need != 0 && corners != need)
         fail(piece.types.line, "cell " + std::to_string(c) + " has type " + std::to_string(types[c]) + " but " +
                                    std::to_string(corners) + " points (expected " + std::to_string(need) + ")");
       const auto id = [&](std::int64_t k) { return base + connectivity[static_cast<std::size_t>(start + k)]; };
-      if (need == 4) raw.tets.push_back({id(0), id(1), id(2), id(3)});
-      else if (need == 3) raw.triangles.push_back({id(0), id(1), id(2)});
+      if (shape.corners == 4) raw.tets.push_back({id(0), id(1), id(2), id(3)});
+      else if (shape.corners == 3) raw.triangles.push_back({id(0), id(1), id(2)});
       start = end;
     }
     if (start != n_ids)

@@ -112,6 +112,25 @@ TEST(GmshReader, ReadsFormat40) {
   expect_cube(read_volume_file(dir.write("cube40.msh", msh40_cube())), 1);
 }
 
+TEST(GmshReader, KeepsTheCornersOfQuadraticElements) {
+  TempDir dir;
+  std::string text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n10\n";
+  const double p[10][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {.5, 0, 0}, {.5, .5, 0}, {0, .5, 0}, {0, 0, .5}, {.5, 0, .5}, {0, .5, .5}};
+  for (int i = 0; i < 10; ++i)
+    text += std::to_string(i + 1) + " " + std::to_string(p[i][0]) + " " + std::to_string(p[i][1]) + " " + std::to_string(p[i][2]) + "\n";
+  text += "$EndNodes\n$Elements\n2\n1 11 0 1 2 3 4 5 6 7 8 9 10\n2 9 0 1 2 3 5 6 7\n$EndElements\n";
+  const RawMesh raw = read_volume_file(dir.write("quadratic.msh", text));
+  ASSERT_EQ(raw.tets.size(), 1u);
+  EXPECT_EQ(raw.tets[0], (std::array<std::int64_t, 4>{0, 1, 2, 3}));
+  ASSERT_EQ(raw.triangles.size(), 1u);
+  EXPECT_EQ(raw.triangles[0], (std::array<std::int64_t, 3>{0, 1, 2}));
+  // A mid-edge node must exist too.
+  test::expect_input_error([&] { read_volume_file(dir.write("mid.msh", replace_once(text, "9 10\n", "9 11\n"))); },
+                           {"mid.msh", "line 19", "node 11"});
+  test::expect_input_error([&] { read_volume_file(dir.write("short.msh", replace_once(text, "9 10\n", "9\n"))); },
+                           {"short.msh", "line 19", "element 1 (a tet) has 9 nodes, expected 10"});
+}
+
 TEST(GmshReader, ReadsWindowsLineEnds) {
   TempDir dir;
   std::string text;

@@ -147,6 +147,21 @@ TEST(VtkLegacyReader, ReadsVersion51OffsetsAndConnectivity) {
   expect_cube(read_volume_file(dir.write("b51.vtk", grid51(true))), 0);
 }
 
+TEST(VtkLegacyReader, KeepsTheCornersOfQuadraticCells) {
+  TempDir dir;
+  const std::string text =
+      "# vtk DataFile Version 4.2\nq\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 10 float\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1 .5 0 0 .5 .5 0 0 .5 0 0 0 .5 .5 0 .5 0 .5 .5\n"
+      "CELLS 3 21\n10 0 1 2 3 4 5 6 7 8 9\n6 0 1 2 4 5 6\n2 0 1\nCELL_TYPES 3\n24 22 3\n";
+  const RawMesh raw = read_volume_file(dir.write("quadratic.vtk", text));
+  ASSERT_EQ(raw.tets.size(), 1u);
+  EXPECT_EQ(raw.tets[0], (std::array<std::int64_t, 4>{0, 1, 2, 3}));
+  ASSERT_EQ(raw.triangles.size(), 1u);
+  test::expect_input_error(
+      [&] { read_volume_file(dir.write("q4.vtk", replace_once(text, "24 22 3", "10 22 3"))); },
+      {"q4.vtk", "cell 0 has type 10 but 10 points (expected 4)"});
+}
+
 TEST(VtkLegacyReader, FansPolygonsAndSplitsStrips) {
   TempDir dir;
   const std::string text =
