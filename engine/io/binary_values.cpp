@@ -109,8 +109,8 @@ std::optional<std::string> decode_base64(std::string_view text, std::size_t max_
   std::size_t padding = 0;
   std::size_t i = 0;
   auto flush = [&](std::size_t digits) {
-    const std::uint32_t bits = (static_cast<std::uint32_t>(group[0]) << 18) | (static_cast<std::uint32_t>(group[1]) << 12) |
-                               (static_cast<std::uint32_t>(group[2]) << 6) | static_cast<std::uint32_t>(group[3]);
+    std::uint32_t bits = 0;
+    for (int g : group) bits = (bits << 6) | static_cast<std::uint32_t>(g);
     const std::size_t n = digits == 4 ? 3 : digits - 1;  // 2 digits -> 1 byte, 3 -> 2
     for (std::size_t k = 0; k < n; ++k) out += static_cast<char>((bits >> (16 - 8 * k)) & 0xff);
     group = {};

@@ -134,7 +134,8 @@ class GmshReader {
     const std::size_t n = count_line(section, "the number of nodes");
     for (std::size_t i = 0; i < n; ++i) {
       const auto tokens = data_line(section, node_progress(n, i));
-      if (tokens.size() != 4) reader_.fail("a node line needs 'tag x y z', found " + std::to_string(tokens.size()) + " values");
+      if (tokens.size() != 4)
+        reader_.fail("a node line needs 'tag x y z', found " + std::to_string(tokens.size()) + " values");
       add_node(tokens[0], tokens[1], tokens[2], tokens[3]);
     }
     expect_end(end, section, n, "nodes");
@@ -153,16 +154,18 @@ class GmshReader {
         if (tokens.size() < 5) reader_.fail("an element line is too short");
         const std::size_t count = reader_.to_count(tokens[4], "the node count", tokens.size());
         if (tokens.size() != 5 + count)
-          reader_.fail("element " + std::string(tokens[0]) + " declares " + std::to_string(count) + " nodes but lists " +
-                       std::to_string(tokens.size() - 5));
+          reader_.fail("element " + std::string(tokens[0]) + " declares " + std::to_string(count) +
+                       " nodes but lists " + std::to_string(tokens.size() - 5));
         first = 5;
       } else {
         // number type tag-count tags... nodes...
         const std::size_t tags = reader_.to_count(tokens[2], "the tag count", tokens.size());
-        if (tokens.size() < 3 + tags) reader_.fail("element " + std::string(tokens[0]) + " has fewer tags than it declares");
+        if (tokens.size() < 3 + tags)
+          reader_.fail("element " + std::string(tokens[0]) + " has fewer tags than it declares");
         first = 3 + tags;
       }
-      if (const CellShape shape = gmsh_cell_shape(type); shape.points != 0) add_element(shape, tokens, first, tokens[0]);
+      if (const CellShape shape = gmsh_cell_shape(type); shape.points != 0)
+        add_element(shape, tokens, first, tokens[0]);
     }
     expect_end(end, section, n, "elements");
   }
@@ -189,7 +192,8 @@ class GmshReader {
         std::vector<std::vector<std::string_view>> tags(count);
         for (std::size_t i = 0; i < count; ++i) {
           tags[i] = data_line("$Nodes", node_progress(n, read + i));
-          if (tags[i].size() != 1) reader_.fail("expected one node tag, found " + std::to_string(tags[i].size()) + " values");
+          if (tags[i].size() != 1)
+            reader_.fail("expected one node tag, found " + std::to_string(tags[i].size()) + " values");
         }
         for (std::size_t i = 0; i < count; ++i) {
           const auto tokens = data_line("$Nodes", "coordinates of " + node_progress(n, read + i));
@@ -257,7 +261,8 @@ class GmshReader {
   static bool equal_ignoring_case(std::string_view a, std::string_view b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i)
-      if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) return false;
+      if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
+        return false;
     return true;
   }
 

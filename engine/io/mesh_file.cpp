@@ -3,7 +3,7 @@
 
 #include "engine/io/mesh_file.h"
 
-#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "engine/input_error.h"
@@ -14,7 +14,7 @@ namespace {
 
 std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;
 }
 

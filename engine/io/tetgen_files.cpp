@@ -7,6 +7,7 @@
 
 #include <charconv>
 #include <filesystem>
+#include <locale>
 #include <ostream>
 
 #include "engine/atomic_file.h"
@@ -46,7 +47,8 @@ NodeFile read_node_file(const std::string& path) {
   LineReader reader(path, text);
   const auto header = next_data_line(reader);
   if (header.empty()) reader.fail_file("no data (expected '<points> 3 <attributes> <markers>')");
-  if (header.size() > 4) reader.fail("the first line has " + std::to_string(header.size()) + " values, expected at most 4");
+  if (header.size() > 4)
+    reader.fail("the first line has " + std::to_string(header.size()) + " values, expected at most 4");
   const std::size_t n = reader.to_count(header[0], "the number of points", text.size());
   if (n == 0) reader.fail("the file declares no points (points in a .poly file are not supported)");
   if (header.size() > 1 && reader.to_int(header[1], "the dimension") != 3)
@@ -93,7 +95,8 @@ std::vector<std::array<std::int64_t, 4>> read_ele_file(const std::string& path, 
   LineReader reader(path, text);
   const auto header = next_data_line(reader);
   if (header.empty()) reader.fail_file("no data (expected '<tets> <4|10> <region flag>')");
-  if (header.size() > 3) reader.fail("the first line has " + std::to_string(header.size()) + " values, expected at most 3");
+  if (header.size() > 3)
+    reader.fail("the first line has " + std::to_string(header.size()) + " values, expected at most 3");
   const std::size_t n = reader.to_count(header[0], "the number of tets", text.size());
   const std::int64_t corners = header.size() > 1 ? reader.to_int(header[1], "the number of nodes per tet") : 4;
   if (corners != 4 && corners != 10)
@@ -122,8 +125,8 @@ std::vector<std::array<std::int64_t, 4>> read_ele_file(const std::string& path, 
     if (i == 0) {
       first_tet = number;
     } else if (number != first_tet + static_cast<std::int64_t>(i)) {
-      reader.fail("tet numbers must be consecutive: expected " + std::to_string(first_tet + static_cast<std::int64_t>(i)) +
-                  ", found " + std::to_string(number));
+      reader.fail("tet numbers must be consecutive: expected " +
+                  std::to_string(first_tet + static_cast<std::int64_t>(i)) + ", found " + std::to_string(number));
     }
     std::array<std::int64_t, 4> tet{};
     for (std::size_t k = 0; k < 4; ++k) {
@@ -181,6 +184,7 @@ std::pair<std::string, std::string> tetgen_pair(const std::string& path) {
 void write_tetgen(const TetMesh& mesh, const std::string& path) {
   const auto [node_path, ele_path] = tetgen_pair(path);
   write_stream_atomically(node_path, [&](std::ostream& out) {
+    out.imbue(std::locale::classic());  // no digit grouping, whatever the global locale
     out << "# mtcut tet mesh: points, numbered from 0\n";
     out << mesh.num_vertices() << " 3 0 0\n";
     for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
@@ -193,6 +197,7 @@ void write_tetgen(const TetMesh& mesh, const std::string& path) {
     }
   });
   write_stream_atomically(ele_path, [&](std::ostream& out) {
+    out.imbue(std::locale::classic());
     out << "# mtcut tet mesh: positively oriented tets, points numbered from 0\n";
     out << mesh.num_tets() << " 4 0\n";
     for (std::size_t t = 0; t < mesh.num_tets(); ++t) {

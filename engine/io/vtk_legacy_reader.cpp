@@ -166,8 +166,10 @@ class VtkLegacyReader {
             reader_.fail("the file is truncated: POINTS declares " + std::to_string(n) + " points, only " +
                          std::to_string(i) + " found");
           double v = 0;
-          if (!parse_real(token, v)) reader_.fail("point " + std::to_string(i) + ": coordinate " + quote_token(token) + " is not a number");
-          if (!std::isfinite(v)) reader_.fail("point " + std::to_string(i) + " has a non-finite coordinate " + quote_token(token));
+          if (!parse_real(token, v))
+            reader_.fail("point " + std::to_string(i) + ": coordinate " + quote_token(token) + " is not a number");
+          if (!std::isfinite(v))
+            reader_.fail("point " + std::to_string(i) + " has a non-finite coordinate " + quote_token(token));
           positions_[i][static_cast<Eigen::Index>(k)] = v;
         }
     }
@@ -190,7 +192,8 @@ class VtkLegacyReader {
       block.ids = read_ints(size, read_type("CONNECTIVITY"), key + " CONNECTIVITY");
       if (block.offsets.front() != 0) fail_here(key + ": the first offset is not 0");
       for (std::size_t c = 0; c + 1 < n; ++c)
-        if (block.offsets[c + 1] < block.offsets[c]) fail_here(key + ": the offsets decrease at cell " + std::to_string(c));
+        if (block.offsets[c + 1] < block.offsets[c])
+          fail_here(key + ": the offsets decrease at cell " + std::to_string(c));
       if (block.offsets.back() != static_cast<std::int64_t>(size))
         fail_here(key + ": the last offset is " + std::to_string(block.offsets.back()) + " but CONNECTIVITY has " +
                   std::to_string(size) + " ids");
@@ -199,7 +202,9 @@ class VtkLegacyReader {
       block.offsets.reserve(n + 1);
       std::size_t at = 0;
       for (std::size_t c = 0; c < n; ++c) {
-        if (at >= size) fail_here(key + " declares " + std::to_string(n) + " cells in " + std::to_string(size) + " values, but they run out at cell " + std::to_string(c));
+        if (at >= size)
+          fail_here(key + " declares " + std::to_string(n) + " cells in " + std::to_string(size) +
+                    " values, but they run out at cell " + std::to_string(c));
         const std::int64_t count = flat[at];
         if (count < 0 || static_cast<std::uint64_t>(count) > size - at - 1)
           fail_here(key + ": cell " + std::to_string(c) + " has a bad corner count " + std::to_string(count) +
@@ -283,7 +288,8 @@ class VtkLegacyReader {
         for (std::size_t i = 0; i < n; ++i) {
           const std::string_view value = token("a value of FIELD array " + name);
           double v = 0;
-          if (!parse_real(value, v)) reader_.fail("FIELD array " + name + ": " + quote_token(value) + " is not a number");
+          if (!parse_real(value, v))
+            reader_.fail("FIELD array " + name + ": " + quote_token(value) + " is not a number");
         }
       }
       last_ = "FIELD array " + name;
@@ -311,8 +317,10 @@ class VtkLegacyReader {
         if (shape.points == 0) continue;
         if (cells_.corners(c) != shape.points)
           reader_.fail_file("cell " + std::to_string(c) + " has type " + std::to_string(types_[c]) + " but " +
-                            std::to_string(cells_.corners(c)) + " points (expected " + std::to_string(shape.points) + ")");
-        if (shape.corners == 4) raw.tets.push_back({cells_.id(c, 0), cells_.id(c, 1), cells_.id(c, 2), cells_.id(c, 3)});
+                            std::to_string(cells_.corners(c)) + " points (expected " +
+                            std::to_string(shape.points) + ")");
+        if (shape.corners == 4)
+          raw.tets.push_back({cells_.id(c, 0), cells_.id(c, 1), cells_.id(c, 2), cells_.id(c, 3)});
         else raw.triangles.push_back({cells_.id(c, 0), cells_.id(c, 1), cells_.id(c, 2)});
       }
     } else {

@@ -70,12 +70,18 @@ class VtuReader {
       return 0;
     }
     std::int64_t n = 0;
-    if (!parse_int(*value, n) || n < 0) fail(tag.line, std::string(key) + "=" + quote_token(*value) + " is not a count");
+    if (!parse_int(*value, n) || n < 0)
+      fail(tag.line, std::string(key) + "=" + quote_token(*value) + " is not a count");
+    // Every point, cell, component or offset takes at least one byte of the file.
+    if (static_cast<std::uint64_t>(n) > text_.size())
+      fail(tag.line,
+           std::string(key) + "=" + quote_token(*value) + " is more than the file can hold (truncated or corrupt)");
     return static_cast<std::size_t>(n);
   }
 
   void read_header(const XmlTag& tag) {
-    if (tag.name != "VTKFile") fail(tag.line, "not a VTK XML file (the first tag is <" + tag.name + ">, not <VTKFile>)");
+    if (tag.name != "VTKFile")
+      fail(tag.line, "not a VTK XML file (the first tag is <" + tag.name + ">, not <VTKFile>)");
     const std::string type = tag.attribute("type").value_or("");
     if (type != "UnstructuredGrid")
       fail(tag.line, "VTKFile type " + quote_token(type) + " is not supported (only UnstructuredGrid, a .vtu file)");
@@ -126,7 +132,8 @@ class VtuReader {
         piece.n_points = to_count(tag, "NumberOfPoints", true);
         piece.n_cells = to_count(tag, "NumberOfCells", true);
         pieces_.push_back(piece);
-      } else if (name == "Points" || name == "Cells" || name == "PointData" || name == "CellData" || name == "FieldData") {
+      } else if (name == "Points" || name == "Cells" || name == "PointData" || name == "CellData" ||
+                 name == "FieldData") {
         section = tag.closing || tag.self_closing ? "" : name;
       } else if (name == "DataArray" && !tag.closing) {
         scan_array(tag, section);
@@ -184,7 +191,8 @@ class VtuReader {
 
   std::uint64_t header_value(const std::string& bytes) const {
     std::int64_t n = 0;
-    if (!decode_int(reinterpret_cast<const unsigned char*>(bytes.data()), header_type_, big_endian_, n)) return UINT64_MAX;
+    if (!decode_int(reinterpret_cast<const unsigned char*>(bytes.data()), header_type_, big_endian_, n))
+      return UINT64_MAX;
     return static_cast<std::uint64_t>(n);
   }
 
@@ -195,7 +203,9 @@ class VtuReader {
     if (!head) fail(a.line, a.label + ": the base64 data holds a character outside the base64 alphabet");
     if (head->size() < h) fail(a.line, a.label + ": the binary data is truncated (no complete header)");
     const std::uint64_t n = header_value(*head);
-    if (n > encoded.size()) fail(a.line, a.label + ": the header claims " + std::to_string(n) + " bytes, more than the data holds (truncated)");
+    if (n > encoded.size())
+      fail(a.line, a.label + ": the header claims " + std::to_string(n) +
+                       " bytes, more than the data holds (truncated)");
     const auto all = decode_base64(encoded, h + n);
     if (!all) fail(a.line, a.label + ": the base64 data holds a character outside the base64 alphabet");
     if (all->size() < h + n)
@@ -231,8 +241,8 @@ class VtuReader {
       }
     }
     if (data.bytes.size() % a.type.size != 0)
-      fail(a.line, a.label + ": " + std::to_string(data.bytes.size()) + " bytes is not a whole number of " + a.type_name +
-                       " values");
+      fail(a.line, a.label + ": " + std::to_string(data.bytes.size()) + " bytes is not a whole number of " +
+                       a.type_name + " values");
     data.count = data.bytes.size() / a.type.size;
     return data;
   }
@@ -244,25 +254,29 @@ class VtuReader {
   }
 
   std::size_t line_of(const ArrayRef& a, const ArrayData& data, std::size_t i) {
-    if (data.tokens.empty()) return a.line;
+    if (a.format != Format::kAscii) return a.line;
     return xml_.line_at(static_cast<std::size_t>(data.tokens[i].data() - text_.data()));
   }
 
   std::vector<Vec3> read_points(const PieceRef& piece) {
     const ArrayRef& a = piece.points;
     if (!a.present) fail(piece.line, "the <Piece> has no Points DataArray");
-    if (a.components != 3) fail(a.line, "Points: NumberOfComponents is " + std::to_string(a.components) + ", expected 3");
+    if (a.components != 3)
+      fail(a.line, "Points: NumberOfComponents is " + std::to_string(a.components) + ", expected 3");
     const ArrayData data = load(a);
     expect_count(a, data, 3 * piece.n_points, "NumberOfPoints=\"" + std::to_string(piece.n_points) + "\" x 3");
+    const auto* bytes = reinterpret_cast<const unsigned char*>(data.bytes.data());
     std::vector<Vec3> points(piece.n_points);
     for (std::size_t i = 0; i < data.count; ++i) {
       double v = 0;
-      if (data.tokens.empty()) {
-        v = decode_real(reinterpret_cast<const unsigned char*>(data.bytes.data()) + i * a.type.size, a.type, big_endian_);
+      if (a.format != Format::kAscii) {
+        v = decode_real(bytes + i * a.type.size, a.type, big_endian_);
       } else if (!parse_real(data.tokens[i], v)) {
-        fail(line_of(a, data, i), "point " + std::to_string(i / 3) + ": coordinate " + quote_token(data.tokens[i]) + " is not a number");
+        fail(line_of(a, data, i),
+             "point " + std::to_string(i / 3) + ": coordinate " + quote_token(data.tokens[i]) + " is not a number");
       }
-      if (!std::isfinite(v)) fail(line_of(a, data, i), "point " + std::to_string(i / 3) + " has a non-finite coordinate");
+      if (!std::isfinite(v))
+        fail(line_of(a, data, i), "point " + std::to_string(i / 3) + " has a non-finite coordinate");
       points[i / 3][static_cast<Eigen::Index>(i % 3)] = v;
     }
     return points;
@@ -271,18 +285,19 @@ class VtuReader {
   // Integers; expected == SIZE_MAX takes any count.
   std::vector<std::int64_t> read_ints(const ArrayRef& a, std::size_t expected, const std::string& why) {
     if (a.type.real) fail(a.line, a.label + ": the DataArray type is " + a.type_name + ", expected an integer type");
-    if (a.components != 1) fail(a.line, a.label + ": NumberOfComponents is " + std::to_string(a.components) + ", expected 1");
+    if (a.components != 1)
+      fail(a.line, a.label + ": NumberOfComponents is " + std::to_string(a.components) + ", expected 1");
     const ArrayData data = load(a);
     if (expected != SIZE_MAX) expect_count(a, data, expected, why);
+    const bool binary = a.format != Format::kAscii;
+    const auto* bytes = reinterpret_cast<const unsigned char*>(data.bytes.data());
     std::vector<std::int64_t> values(data.count);
     for (std::size_t i = 0; i < data.count; ++i) {
-      const bool ok = data.tokens.empty()
-                          ? decode_int(reinterpret_cast<const unsigned char*>(data.bytes.data()) + i * a.type.size, a.type,
-                                       big_endian_, values[i])
-                          : parse_int(data.tokens[i], values[i]);
-      if (!ok)
-        fail(line_of(a, data, i), a.label + ": value " + std::to_string(i) +
-                                      (data.tokens.empty() ? std::string(" is out of range") : " " + quote_token(data.tokens[i]) + " is not an integer"));
+      if (binary && !decode_int(bytes + i * a.type.size, a.type, big_endian_, values[i]))
+        fail(a.line, a.label + ": value " + std::to_string(i) + " is out of range");
+      if (!binary && !parse_int(data.tokens[i], values[i]))
+        fail(line_of(a, data, i),
+             a.label + ": value " + std::to_string(i) + " " + quote_token(data.tokens[i]) + " is not an integer");
     }
     return values;
   }

@@ -6,6 +6,7 @@
 
 #include <bit>
 #include <cstring>
+#include <locale>
 #include <ostream>
 #include <sstream>
 
@@ -86,6 +87,7 @@ void write_vtu(const TetMesh& mesh, const std::string& path, const std::vector<C
   for (const CellField& field : cell_data) fields_at.push_back(block.add(field.values));
 
   std::ostringstream xml;
+  xml.imbue(std::locale::classic());  // no digit grouping in counts and offsets
   const char* order = std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
   xml << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"" << order

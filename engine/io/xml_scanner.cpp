@@ -65,8 +65,9 @@ std::size_t XmlScanner::line_at(std::size_t offset) {
     counted_pos_ = 0;
     counted_line_ = 1;
   }
-  counted_line_ += static_cast<std::size_t>(
-      std::count(text_.begin() + static_cast<std::ptrdiff_t>(counted_pos_), text_.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
+  const auto from = text_.begin() + static_cast<std::ptrdiff_t>(counted_pos_);
+  const auto to = text_.begin() + static_cast<std::ptrdiff_t>(offset);
+  counted_line_ += static_cast<std::size_t>(std::count(from, to, '\n'));
   counted_pos_ = offset;
   return counted_line_;
 }
@@ -133,7 +134,8 @@ bool XmlScanner::next_tag(XmlTag& tag) {
       break;
     }
     if (c == '/' && !tag.closing) {
-      if (pos_ + 1 >= text_.size() || text_[pos_ + 1] != '>') fail(tag.line, "a stray '/' in the tag <" + tag.name + ">");
+      if (pos_ + 1 >= text_.size() || text_[pos_ + 1] != '>')
+        fail(tag.line, "a stray '/' in the tag <" + tag.name + ">");
       tag.self_closing = true;
       pos_ += 2;
       break;

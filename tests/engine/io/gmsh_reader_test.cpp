@@ -131,6 +131,15 @@ TEST(GmshReader, KeepsTheCornersOfQuadraticElements) {
                            {"short.msh", "line 19", "element 1 (a tet) has 9 nodes, expected 10"});
 }
 
+TEST(GmshReader, ReadsFilesWrittenByMeshio) {
+  for (const char* name : {"cube_meshio22.msh", "cube_meshio41.msh"}) {
+    SCOPED_TRACE(name);
+    const RawMesh raw = read_volume_file(test::io_data(name));
+    EXPECT_EQ(raw.positions, test::kuhn_cube().positions);
+    EXPECT_EQ(raw.tets, test::raw_tets(test::kuhn_cube()));
+  }
+}
+
 TEST(GmshReader, ReadsWindowsLineEnds) {
   TempDir dir;
   std::string text;

@@ -20,8 +20,13 @@
 #include "engine/input_error.h"
 #include "engine/io/mesh_file.h"
 #include "engine/tet_mesh.h"
+#include "tests/test_paths.h"
 
 namespace mtcut::engine::test {
+
+// A small file in tests/engine/io/data: the Kuhn cube (kuhn_cube) written
+// by meshio 5.3.5, an independent writer, in the formats named by the file.
+inline std::string io_data(const std::string& name) { return mtcut::test::source_path("tests/engine/io/data/" + name); }
 
 // A fresh folder under the system temp folder, removed with its contents.
 class TempDir {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "engine/input_error.h"
 #include "tests/engine/io/io_test_util.h"
 #include "tests/test_paths.h"
@@ -65,6 +67,66 @@ TEST(MeshFile, BinaryGarbageIsRejectedByEveryReader) {
   for (int i = 0; i < 4096; ++i) garbage += static_cast<char>((i * 7919 + 13) & 0xff);
   for (const char* name : {"junk.msh", "junk.vtk", "junk.vtu", "junk.node"})
     EXPECT_THROW(read_volume_file(dir.write(name, garbage)), InputError) << name;
+}
+
+// A corrupted copy of bytes: cut, bytes overwritten, a run deleted, or a
+// troublesome token inserted.
+std::string corrupt(const std::string& bytes, std::mt19937& rng) {
+  std::string d = bytes;
+  const auto at = [&] { return static_cast<std::size_t>(rng() % d.size()); };
+  switch (rng() % 4) {
+    case 0: d.resize(at()); break;
+    case 1:
+      for (unsigned k = 0, n = 1 + rng() % 4; k < n; ++k) d[at()] = static_cast<char>(rng());
+      break;
+    case 2: d.erase(at(), rng() % 20); break;
+    default: {
+      static const char* tokens[] = {"nan", " ", "\n", "-1", "999999", "<", ">", "\"", "=", "$", "0", "1e400", "_"};
+      d.insert(at(), tokens[rng() % 13]);
+    }
+  }
+  return d;
+}
+
+// Whatever a reader makes of a corrupted file, it either rejects it with an
+// InputError of one line or returns a mesh whose ids and positions are sane;
+// it never crashes, reads out of bounds (ASan) or throws anything else.
+TEST(MeshFile, CorruptedFilesAreRejectedOrReadSanely) {
+  TempDir dir;
+  const RawMesh raw_liver = read_volume_file(mtcut::test::shared_mesh("liver.msh"));
+  const TetMesh liver = make_tet_mesh(raw_liver.positions, raw_liver.tets, "liver");
+  write_vtu(liver, dir.file("written.vtu"));
+  write_tetgen(liver, dir.file("written"));
+  const std::vector<std::string> sources = {
+      mtcut::test::shared_mesh("liver.msh"), mtcut::test::shared_mesh("liver.vtk"),
+      mtcut::test::shared_mesh("Armadillo_Tetra_4406.vtu"), dir.file("written.vtu"), dir.file("written.node"),
+      dir.file("written.ele")};
+  std::mt19937 rng(20240611);
+  std::size_t rejected = 0, read = 0;
+  for (const std::string& source : sources) {
+    const std::string bytes = test::read_bytes(source);
+    const std::string ext = std::filesystem::path(source).extension().string();
+    for (int round = 0; round < 40; ++round) {
+      // The pair's other file stays intact.
+      if (ext == ".node") dir.write("case.ele", test::read_bytes(dir.file("written.ele")));
+      if (ext == ".ele") dir.write("case.node", test::read_bytes(dir.file("written.node")));
+      const std::string path = dir.write("case" + ext, corrupt(bytes, rng));
+      try {
+        const RawMesh raw = read_volume_file(path);
+        const auto n = static_cast<std::int64_t>(raw.positions.size());
+        for (const Vec3& p : raw.positions) ASSERT_TRUE(p.allFinite()) << source << " round " << round;
+        for (const auto& t : raw.tets)
+          for (std::int64_t id : t) ASSERT_TRUE(id >= 0 && id < n) << source << " round " << round;
+        for (const auto& t : raw.triangles)
+          for (std::int64_t id : t) ASSERT_TRUE(id >= 0 && id < n) << source << " round " << round;
+        ++read;
+      } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+        ++rejected;
+      }
+    }
+  }
+  EXPECT_GT(rejected, read);  // most corruptions are caught
 }
 
 }  // namespace

@@ -147,6 +147,13 @@ TEST(VtkLegacyReader, ReadsVersion51OffsetsAndConnectivity) {
   expect_cube(read_volume_file(dir.write("b51.vtk", grid51(true))), 0);
 }
 
+TEST(VtkLegacyReader, ReadsVersion51FilesWrittenByMeshio) {
+  for (const char* name : {"cube_meshio_ascii.vtk", "cube_meshio_binary.vtk"}) {
+    SCOPED_TRACE(name);
+    expect_cube(read_volume_file(test::io_data(name)), 0);
+  }
+}
+
 TEST(VtkLegacyReader, KeepsTheCornersOfQuadraticCells) {
   TempDir dir;
   const std::string text =

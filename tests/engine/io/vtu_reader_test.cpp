@@ -178,6 +178,12 @@ TEST(VtuReader, ReadsEveryEncodingByteOrderAndHeaderType) {
         }
 }
 
+TEST(VtuReader, ReadsFilesWrittenByMeshioAndRejectsCompressedOnes) {
+  expect_cube(read_volume_file(test::io_data("cube_meshio_binary.vtu")));
+  expect_read_error(test::io_data("cube_meshio_zlib.vtu"),
+                    {"line 2", "compressed data (vtkZLibDataCompressor) is not supported"});
+}
+
 TEST(VtuReader, ReadsBase64WithSeparatelyEncodedHeaders) {
   TempDir dir;
   VtuStyle inline_style;
@@ -285,7 +291,10 @@ TEST(VtuReader, RejectsTruncatedAndCorruptBinaryData) {
       {"inline-char.vtu", replace_once(inline_good, "AAAA", "AA*A"), {"outside the base64 alphabet"}},
       {"appended-cut.vtu", raw.substr(0, underscore + 300), {"truncated"}},
       {"appended-lie.vtu", cube_vtu(appended_lying), {"connectivity: the appended data is truncated: the header says 1096 bytes"}},
-      {"appended-offset.vtu", replace_once(raw, "offset=\"0\"", "offset=\"99999\""), {"line 6", "offset 99999 is past the end"}},
+      {"appended-offset.vtu", replace_once(raw, "offset=\"0\"", "offset=\"" + std::to_string(raw.size() - 1) + "\""),
+       {"line 6", "offset " + std::to_string(raw.size() - 1) + " is past the end"}},
+      {"appended-huge.vtu", replace_once(raw, "offset=\"0\"", "offset=\"99999\""),
+       {"line 6", "offset='99999' is more than the file can hold"}},
       {"appended-odd.vtu", replace_once(raw, "offset=\"0\"", "offset=\"1\""), {"line 6", "Points:"}},
       {"base64-cut.vtu", encoded.substr(0, encoded.find("\n_") + 200), {"truncated"}},
   });
