@@ -1,0 +1,32 @@
+#pragma once
+// Forces and energies of the spring model, shared by both integrators and by
+// the tests that check them.
+
+#include <vector>
+
+#include "sim/environment.h"
+#include "sim/spring_model.h"
+#include "sim/spring_state.h"
+
+namespace mtcut::sim {
+
+// f = spring forces (Hooke + dashpot along the spring) + volume terms
+// + gravity + air drag. `f` is resized to n_particles and overwritten.
+void compute_forces(const SpringModel& model, const Environment& env, const SpringState& state,
+                    std::vector<Vec3>& f);
+
+// Kinetic + elastic (springs and volume terms) + gravitational potential.
+double total_energy(const SpringModel& model, const Environment& env, const SpringState& state);
+
+// Sum of m v.
+Vec3 linear_momentum(const SpringModel& model, const SpringState& state);
+
+// The largest time step symplectic Euler is stable at, estimated per
+// particle from its springs' summed stiffness and damping (dashpots shrink
+// it: stiffness-proportional damping makes explicit steps very small).
+double critical_time_step(const SpringModel& model);
+
+// A state at rest in the rest shape.
+SpringState rest_state(const SpringModel& model);
+
+}  // namespace mtcut::sim

@@ -1,1 +1,0 @@
-// Empty until the sim layer lands; keeps the library target buildable.

@@ -1,0 +1,72 @@
+#pragma once
+// The mass-spring model of the tissue on one set of tets (the MT frontier in
+// use): one particle per vertex, one spring per tet edge.
+//
+// Why this shape. It is the constant "model" of a step (MuJoCo's mjModel):
+// rebuilt when the frontier changes or a cut lands, read-only while the
+// integrator runs, struct-of-arrays so the spring loop streams through it.
+// Particles are numbered densely 0..n-1 and carry the MT vertex they stand
+// for, so state can be carried across rebuilds by vertex id.
+//
+// Stiffness: Van Gelder's formula ("Approximate simulation of elastic
+// membranes by triangulated spring meshes", JGT 1998), in 3D:
+//   k_e = E * sum_{T around e} vol(T) / |e|^2
+// which makes a coarse and a fine tessellation of the same body about as
+// stiff as each other (the sum of edge stiffnesses scales with volume / h^2).
+// Masses are lumped: each tet gives a quarter of density * vol(T) to each of
+// its corners, so the total mass is exactly density * total volume.
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "engine/tet_mesh.h"
+#include "engine/validation.h"
+#include "sim/material.h"
+
+namespace mtcut::sim {
+
+using engine::Tet;
+using engine::Vec3;
+using engine::VertId;
+
+struct SpringModel {
+  // --- particles (n_particles)
+  std::vector<VertId> particle_vertex;  // the MT vertex each particle stands for
+  std::vector<double> mass;             // lumped mass, kg
+  std::vector<double> inv_mass;         // 1 / mass; 0 for a fixed particle
+  std::vector<Vec3> rest_position;      // rest positions, m
+
+  // --- springs (n_springs), one per distinct tet edge
+  std::vector<std::int32_t> spring_a;   // particle index, a < b
+  std::vector<std::int32_t> spring_b;
+  std::vector<double> rest_length;      // m
+  std::vector<double> stiffness;        // N/m (Van Gelder)
+  std::vector<double> damping;          // N s/m (beta * stiffness)
+
+  // --- volume terms (n_tets when material.volume_stiffness > 0, else empty)
+  std::vector<std::array<std::int32_t, 4>> tet_particles;
+  std::vector<double> rest_volume;      // m^3
+  // Energy 1/2 * volume_modulus * (V - V0)^2 / V0 per tet, Pa.
+  double volume_modulus = 0.0;
+
+  double mass_damping = 0.0;            // 1/s, from the material
+  double total_mass = 0.0;              // kg
+
+  std::size_t num_particles() const { return mass.size(); }
+  std::size_t num_springs() const { return spring_a.size(); }
+  std::size_t num_fixed() const;
+
+  // Sizes agree, ids in range, masses positive and summing to total_mass,
+  // springs positive and distinct, a fixed particle has inv_mass 0.
+  engine::ValidationReport validate() const;
+};
+
+// Builds the model on `tets` (vertex ids into rest_positions, positively
+// oriented). `is_fixed(v)` pins the particle of MT vertex v.
+SpringModel build_spring_model(std::span<const Tet> tets, std::span<const Vec3> rest_positions,
+                               const MaterialDef& material, const std::function<bool(VertId)>& is_fixed = {});
+
+}  // namespace mtcut::sim

@@ -1,0 +1,73 @@
+#include "sim/spring_model.h"
+
+#include <gtest/gtest.h>
+
+#include "engine/mesh_loader.h"
+#include "engine/tet_adjacency.h"
+#include "sim/fixed_region.h"
+#include "tests/test_paths.h"
+
+namespace mtcut::sim {
+namespace {
+
+engine::TetMesh box_mesh(int tets, const Vec3& size) {
+  engine::MeshLoadDef def;
+  def.builtin_tets = tets;
+  def.builtin_size = size;
+  return engine::load_mesh("builtin:box", def).mesh;
+}
+
+TEST(SpringModel, OneSpringPerEdgeAndExactMass) {
+  const engine::TetMesh mesh = engine::load_mesh(test::shared_mesh("liver.msh"), {}).mesh;
+  MaterialDef material;
+  const SpringModel model = build_spring_model(mesh.tets, mesh.positions, material);
+  const auto report = model.validate();
+  ASSERT_TRUE(report.ok()) << report.summary();
+  EXPECT_NEAR(model.total_mass, material.density * mesh.total_volume(), 1e-12 * model.total_mass);
+  // Euler for a tet mesh of a ball: V - E + F - T = 1.
+  const std::size_t faces = (4 * mesh.num_tets() + engine::build_adjacency(mesh).boundary.size()) / 2;
+  EXPECT_EQ(static_cast<long>(model.num_particles()) - static_cast<long>(model.num_springs()) +
+                static_cast<long>(faces) - static_cast<long>(mesh.num_tets()),
+            1);
+}
+
+TEST(SpringModel, VanGelderStiffnessOfOneTet) {
+  const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const std::vector<engine::Tet> tets = {{VertId(0), VertId(1), VertId(2), VertId(3)}};
+  MaterialDef material;
+  material.youngs_modulus = 600;
+  const SpringModel model = build_spring_model(tets, p, material);
+  ASSERT_EQ(model.num_springs(), 6u);
+  for (std::size_t s = 0; s < 6; ++s) {
+    const double l = model.rest_length[s];
+    EXPECT_NEAR(model.stiffness[s], 600.0 * (1.0 / 6.0) / (l * l), 1e-12);
+    EXPECT_NEAR(model.damping[s], material.stiffness_damping * model.stiffness[s], 1e-15);
+  }
+}
+
+TEST(SpringModel, FixedRegionPinsParticlesInRestSpace) {
+  const engine::TetMesh mesh = box_mesh(500, Vec3(0.2, 0.02, 0.02));
+  FixedRegion region;
+  region.kind = FixedRegion::Kind::kHalfSpace;
+  region.normal = Vec3(1, 0, 0);
+  region.offset = -0.1 + 1e-9;  // the face at x = -0.1
+  const SpringModel model =
+      build_spring_model(mesh.tets, mesh.positions, {}, [&](VertId v) { return region.contains(v, mesh.position(v)); });
+  ASSERT_TRUE(model.validate().ok());
+  EXPECT_GT(model.num_fixed(), 3u);
+  for (std::size_t i = 0; i < model.num_particles(); ++i)
+    EXPECT_EQ(model.inv_mass[i] == 0, model.rest_position[i].x() < -0.1 + 1e-9) << i;
+}
+
+TEST(SpringModel, ValidateCatchesBrokenModels) {
+  const engine::TetMesh mesh = box_mesh(100, Vec3(1, 1, 1));
+  SpringModel model = build_spring_model(mesh.tets, mesh.positions, {});
+  model.mass[0] *= 2;
+  EXPECT_FALSE(model.validate().ok());
+  model = build_spring_model(mesh.tets, mesh.positions, {});
+  model.spring_b[0] = model.spring_a[0];
+  EXPECT_FALSE(model.validate().ok());
+}
+
+}  // namespace
+}  // namespace mtcut::sim

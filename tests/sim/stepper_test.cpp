@@ -1,0 +1,218 @@
+#include "sim/stepper.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "engine/mesh_loader.h"
+#include "sim/fixed_region.h"
+#include "sim/forces.h"
+
+namespace mtcut::sim {
+namespace {
+
+constexpr double kDt = 1.0 / 60.0;
+
+engine::TetMesh box_mesh(int tets, const Vec3& size) {
+  engine::MeshLoadDef def;
+  def.builtin_tets = tets;
+  def.builtin_size = size;
+  return engine::load_mesh("builtin:box", def).mesh;
+}
+
+MaterialDef stiff_material() {
+  MaterialDef m;
+  m.youngs_modulus = 1e5;
+  m.density = 1000;
+  m.stiffness_damping = 0.002;
+  m.mass_damping = 2.0;
+  return m;
+}
+
+IntegratorDef integrator(IntegratorKind kind, int substeps = 1) {
+  IntegratorDef def;
+  def.kind = kind;
+  def.substeps = substeps;
+  def.cg_tolerance = 1e-8;
+  def.cg_max_iterations = 500;
+  return def;
+}
+
+// Sub-steps that keep symplectic Euler at half its critical time step.
+int explicit_substeps(const SpringModel& model, double dt) {
+  return static_cast<int>(std::ceil(dt / (0.5 * critical_time_step(model))));
+}
+
+class BothIntegrators : public ::testing::TestWithParam<IntegratorKind> {};
+
+TEST_P(BothIntegrators, FreeFallFollowsTheParabola) {
+  const engine::TetMesh mesh = box_mesh(50, Vec3(0.1, 0.1, 0.1));
+  MaterialDef material;
+  material.youngs_modulus = 1e-12;  // springs too weak to matter
+  material.stiffness_damping = 0;
+  material.mass_damping = 0;
+  const SpringModel model = build_spring_model(mesh.tets, mesh.positions, material);
+  SpringState state = rest_state(model);
+  for (auto& v : state.v) v = Vec3(0.3, 0, 1.0);
+  Environment env;
+  Stepper stepper;
+  const int steps = 60;
+  for (int k = 0; k < steps; ++k) ASSERT_TRUE(stepper.step(model, env, integrator(GetParam()), state, kDt).accepted);
+  const double t = steps * kDt;
+  for (std::size_t i = 0; i < model.num_particles(); ++i) {
+    const Vec3 exact = model.rest_position[i] + Vec3(0.3, 0, 1.0) * t + 0.5 * env.gravity * t * t;
+    // Both schemes are first order: the error is h g t / 2.
+    EXPECT_NEAR((state.x[i] - exact).norm(), 0.5 * 9.81 * kDt * t, 1e-9) << i;
+    EXPECT_NEAR((state.v[i] - (Vec3(0.3, 0, 1.0) + env.gravity * t)).norm(), 0.0, 1e-9);
+  }
+}
+
+TEST_P(BothIntegrators, MomentumIsConservedWithoutExternalForces) {
+  const engine::TetMesh mesh = box_mesh(400, Vec3(0.1, 0.05, 0.05));
+  MaterialDef material = stiff_material();
+  material.mass_damping = 0;  // air drag is an external force
+  const SpringModel model = build_spring_model(mesh.tets, mesh.positions, material);
+  SpringState state = rest_state(model);
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  for (auto& v : state.v) v = Vec3(noise(rng), noise(rng), noise(rng));
+  Environment env;
+  env.gravity.setZero();
+  const Vec3 before = linear_momentum(model, state);
+  const bool implicit = GetParam() == IntegratorKind::kImplicitEuler;
+  const IntegratorDef def = integrator(GetParam(), implicit ? 1 : explicit_substeps(model, kDt));
+  Stepper stepper;
+  for (int k = 0; k < 30; ++k) ASSERT_TRUE(stepper.step(model, env, def, state, kDt).accepted);
+  const Vec3 after = linear_momentum(model, state);
+  const double scale = model.total_mass * 0.05;
+  // Explicit: every spring force is equal and opposite, so round-off only.
+  // Implicit: the system conserves momentum exactly, but CG stops at a
+  // residual (1e-8 relative here) whose sum is the momentum it moves.
+  EXPECT_LT((after - before).norm(), (implicit ? 1e-6 : 1e-12) * scale) << (after - before).transpose();
+}
+
+TEST_P(BothIntegrators, EnergyDecaysWithDamping) {
+  const engine::TetMesh mesh = box_mesh(400, Vec3(0.1, 0.05, 0.05));
+  const SpringModel model = build_spring_model(mesh.tets, mesh.positions, stiff_material());
+  SpringState state = rest_state(model);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.002, 0.002);
+  for (auto& x : state.x) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
+  Environment env;
+  env.gravity.setZero();
+  const bool implicit = GetParam() == IntegratorKind::kImplicitEuler;
+  // Explicit is stable below its critical time step: sub-steps.
+  const IntegratorDef def = integrator(GetParam(), implicit ? 1 : explicit_substeps(model, kDt));
+  Stepper stepper;
+  const double e0 = total_energy(model, env, state);
+  double previous = e0;
+  for (int k = 0; k < 120; ++k) {
+    ASSERT_TRUE(stepper.step(model, env, def, state, kDt).accepted) << "frame " << k;
+    const double e = total_energy(model, env, state);
+    EXPECT_LE(e, e0 * (1 + 1e-9)) << "frame " << k;
+    if (k % 30 == 29 && previous > 1e-12 * e0) {  // above round-off
+      EXPECT_LT(e, previous) << "frame " << k;
+      previous = e;
+    }
+  }
+  EXPECT_LT(total_energy(model, env, state), 0.5 * e0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Stepper, BothIntegrators,
+                         ::testing::Values(IntegratorKind::kSymplecticEuler, IntegratorKind::kImplicitEuler));
+
+// The static elongation of a bar hanging from its top face, on a mesh.
+double hanging_elongation(int tets) {
+  const double length = 0.2;
+  const engine::TetMesh mesh = box_mesh(tets, Vec3(0.03, 0.03, length));
+  FixedRegion top;
+  top.kind = FixedRegion::Kind::kHalfSpace;
+  top.normal = Vec3(0, 0, -1);
+  top.offset = -(length / 2 - 1e-9);  // z >= length / 2
+  const SpringModel model = build_spring_model(mesh.tets, mesh.positions, stiff_material(),
+                                               [&](VertId v) { return top.contains(v, mesh.position(v)); });
+  SpringState state = rest_state(model);
+  Environment env;
+  Stepper stepper;
+  IntegratorDef def = integrator(IntegratorKind::kImplicitEuler);
+  def.cg_tolerance = 1e-6;
+  for (int k = 0; k < 600; ++k) {  // 10 s
+    const StepReport r = stepper.step(model, env, def, state, kDt);
+    EXPECT_TRUE(r.accepted) << "frame " << k;
+    if (!r.accepted) return 0;
+  }
+  // Elongation: how far the bottom face's centroid came down.
+  double drop = 0;
+  int count = 0;
+  for (std::size_t i = 0; i < model.num_particles(); ++i)
+    if (model.rest_position[i].z() < -length / 2 + 1e-9) {
+      drop += model.rest_position[i].z() - state.x[i].z();
+      ++count;
+    }
+  // Settled: nothing moves any more.
+  for (const auto& v : state.v) EXPECT_LT(v.norm(), 1e-3);
+  return drop / count;
+}
+
+TEST(StepperBar, HangingBarSettlesAlikeAtCoarseAndFineResolution) {
+  const double coarse = hanging_elongation(300);
+  const double fine = hanging_elongation(2500);
+  // Continuum: rho g L^2 / (2 E) = 1000 * 9.81 * 0.04 / 2e5 = 2 mm.
+  EXPECT_GT(coarse, 0.0005);
+  EXPECT_LT(coarse, 0.01);
+  EXPECT_LT(std::abs(coarse - fine), 0.2 * fine) << "coarse " << coarse << " fine " << fine;
+}
+
+TEST(StepperGuard, NanIsRefusedAndTheStateRestored) {
+  const engine::TetMesh mesh = box_mesh(100, Vec3(0.1, 0.1, 0.1));
+  const SpringModel model = build_spring_model(mesh.tets, mesh.positions, stiff_material());
+  SpringState state = rest_state(model);
+  state.v[3] = Vec3(std::nan(""), 0, 0);
+  const SpringState before = state;
+  Stepper stepper;
+  for (const auto kind : {IntegratorKind::kSymplecticEuler, IntegratorKind::kImplicitEuler}) {
+    const StepReport r = stepper.step(model, Environment{}, integrator(kind), state, kDt);
+    EXPECT_FALSE(r.accepted);
+    for (std::size_t i = 0; i < state.x.size(); ++i) EXPECT_EQ(state.x[i], before.x[i]);
+  }
+  EXPECT_EQ(stepper.refused_steps(), 2u);
+}
+
+TEST(StepperGuard, ExplodingExplicitStepIsRefused) {
+  const engine::TetMesh mesh = box_mesh(100, Vec3(0.1, 0.1, 0.1));
+  const SpringModel model = build_spring_model(mesh.tets, mesh.positions, stiff_material());
+  SpringState state = rest_state(model);
+  state.x[0] += Vec3(0.01, 0, 0);
+  Stepper stepper;
+  int refused = 0;
+  // One explicit step of 1/60 s on a stiff material diverges within frames.
+  for (int k = 0; k < 50; ++k)
+    refused += stepper.step(model, Environment{}, integrator(IntegratorKind::kSymplecticEuler), state, kDt).accepted ? 0 : 1;
+  EXPECT_GT(refused, 0);
+  for (const auto& x : state.x) EXPECT_TRUE(x.allFinite());
+}
+
+TEST(Contacts, FloorStopsFallingParticlesAndToolPushesThemOut) {
+  const engine::TetMesh mesh = box_mesh(100, Vec3(0.1, 0.1, 0.1));
+  const SpringModel model = build_spring_model(mesh.tets, mesh.positions, stiff_material());
+  SpringState state = rest_state(model);
+  Environment env;
+  env.floor = Plane{Vec3(0, 0, 1), -0.06};
+  Stepper stepper;
+  for (int k = 0; k < 120; ++k) stepper.step(model, env, integrator(IntegratorKind::kImplicitEuler), state, kDt);
+  for (const auto& x : state.x) EXPECT_GE(x.z(), -0.06 - 1e-12);
+  double lowest = 1;
+  for (const auto& x : state.x) lowest = std::min(lowest, x.z());
+  EXPECT_NEAR(lowest, -0.06, 1e-3);  // it landed
+
+  SpringState pushed = rest_state(model);
+  env = Environment{};
+  env.gravity.setZero();
+  env.tool = Capsule{Vec3(0, 0, -1), Vec3(0, 0, 1), 0.03};
+  apply_contacts(model, env, pushed);
+  for (std::size_t i = 0; i < pushed.x.size(); ++i)
+    EXPECT_GE(pushed.x[i].head<2>().norm(), 0.03 - 1e-12) << pushed.x[i].transpose() << " rest " << model.rest_position[i].transpose();
+}
+
+}  // namespace
+}  // namespace mtcut::sim
