@@ -1,0 +1,202 @@
+#include "engine/mt/mt.h"
+
+#include <algorithm>
+#include <cassert>
+
+#include "engine/mt/tet_error.h"
+#include "engine/tet_adjacency.h"
+#include "engine/tet_geometry.h"
+
+namespace mtcut::engine {
+namespace {
+
+template <class T>
+std::size_t vector_bytes(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+
+std::vector<FragId> sorted_unique(std::vector<FragId> ids) {
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+}  // namespace
+
+Mt Mt::from_fine_mesh(const TetMesh& fine) {
+  Mt mt;
+  mt.positions_ = fine.positions;
+  mt.root_ = mt.add_fragment();
+  const TetAdjacency adjacency = build_adjacency(fine);
+  const std::size_t n = fine.num_tets();
+  mt.tet_verts_.reserve(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    FaceMask mask = 0;
+    for (int f = 0; f < 4; ++f)
+      if (!adjacency.neighbors[t][f].valid()) mask |= static_cast<FaceMask>(1u << f);
+    mt.add_tet(fine.tets[t], mt.root_, FragId(), mask);
+  }
+  mt.fine_volume_ = fine.total_volume();
+  return mt;
+}
+
+VertId Mt::add_vertex(const Vec3& rest_position) {
+  positions_.push_back(rest_position);
+  ++revision_;
+  return VertId(positions_.size() - 1);
+}
+
+std::array<Vec3, 4> Mt::corners(TetId t) const {
+  const Tet& v = tet(t);
+  return {position(v[0]), position(v[1]), position(v[2]), position(v[3])};
+}
+
+double Mt::volume(TetId t) const {
+  const auto c = corners(t);
+  return signed_volume(c[0], c[1], c[2], c[3]);
+}
+
+TetId Mt::add_tet(const Tet& verts, FragId birth, FragId death, FaceMask boundary) {
+  assert(birth.valid() && birth.index() < num_fragments());
+  const TetId t(tet_verts_.size());
+  tet_verts_.push_back(verts);
+  const auto c = corners(t);
+  tet_error_.push_back(tet_error(c[0], c[1], c[2], c[3]));
+  tet_boundary_.push_back(boundary);
+  tet_birth_.push_back(birth);
+  tet_birth_slot_.push_back(static_cast<std::int32_t>(frag_created_[birth.index()].size()));
+  frag_created_[birth.index()].push_back(t);
+  tet_death_.push_back(FragId());
+  tet_death_slot_.push_back(-1);
+  if (death.valid()) set_death(t, death);
+  ++live_tets_;
+  ++revision_;
+  return t;
+}
+
+void Mt::erase_from(std::vector<std::vector<TetId>>& lists, std::vector<std::int32_t>& slots, FragId f, TetId t) {
+  auto& list = lists[f.index()];
+  const std::int32_t at = slots[t.index()];
+  assert(at >= 0 && list[static_cast<std::size_t>(at)] == t);
+  const TetId last = list.back();
+  list[static_cast<std::size_t>(at)] = last;
+  slots[last.index()] = at;
+  list.pop_back();
+  slots[t.index()] = -1;
+}
+
+void Mt::kill_tet(TetId t) {
+  assert(alive(t));
+  erase_from(frag_created_, tet_birth_slot_, birth(t), t);
+  if (death(t).valid()) erase_from(frag_replaced_, tet_death_slot_, death(t), t);
+  tet_birth_[t.index()] = FragId();
+  tet_death_[t.index()] = FragId();
+  --live_tets_;
+  ++revision_;
+}
+
+void Mt::set_birth(TetId t, FragId f) {
+  assert(alive(t) && f.valid());
+  erase_from(frag_created_, tet_birth_slot_, birth(t), t);
+  tet_birth_[t.index()] = f;
+  tet_birth_slot_[t.index()] = static_cast<std::int32_t>(frag_created_[f.index()].size());
+  frag_created_[f.index()].push_back(t);
+  ++revision_;
+}
+
+void Mt::set_death(TetId t, FragId f) {
+  assert(alive(t));
+  if (death(t).valid()) erase_from(frag_replaced_, tet_death_slot_, death(t), t);
+  tet_death_[t.index()] = f;
+  if (f.valid()) {
+    tet_death_slot_[t.index()] = static_cast<std::int32_t>(frag_replaced_[f.index()].size());
+    frag_replaced_[f.index()].push_back(t);
+  }
+  ++revision_;
+}
+
+float Mt::fragment_error(FragId f) const {
+  float e = 0.0f;
+  for (TetId t : created(f)) e = std::max(e, error(t));
+  return e;
+}
+
+FragId Mt::add_fragment() {
+  frag_created_.emplace_back();
+  frag_replaced_.emplace_back();
+  ++revision_;
+  return FragId(frag_created_.size() - 1);
+}
+
+std::vector<FragId> Mt::parents(FragId f) const {
+  std::vector<FragId> out;
+  out.reserve(replaced(f).size());
+  for (TetId t : replaced(f)) out.push_back(birth(t));
+  return sorted_unique(std::move(out));
+}
+
+std::vector<FragId> Mt::children(FragId f) const {
+  std::vector<FragId> out;
+  out.reserve(created(f).size());
+  for (TetId t : created(f))
+    if (death(t).valid()) out.push_back(death(t));
+  return sorted_unique(std::move(out));
+}
+
+std::vector<FragId> Mt::topological_order() const {
+  const std::size_t n = num_fragments();
+  // In-degree counts arcs (one per replaced tet), so no deduplication is needed.
+  std::vector<std::int32_t> pending(n, 0);
+  for (std::size_t f = 0; f < n; ++f) pending[f] = static_cast<std::int32_t>(frag_replaced_[f].size());
+  std::vector<FragId> order;
+  order.reserve(n);
+  if (!root_.valid() || pending[root_.index()] != 0) return order;
+  order.push_back(root_);
+  for (std::size_t head = 0; head < order.size(); ++head) {
+    for (TetId t : created(order[head])) {
+      const FragId c = death(t);
+      if (c.valid() && --pending[c.index()] == 0) order.push_back(c);
+    }
+  }
+  return order;
+}
+
+std::size_t Mt::bytes() const {
+  std::size_t total = vector_bytes(positions_) + vector_bytes(tet_verts_) + vector_bytes(tet_birth_) +
+                      vector_bytes(tet_death_) + vector_bytes(tet_error_) + vector_bytes(tet_boundary_) +
+                      vector_bytes(tet_birth_slot_) + vector_bytes(tet_death_slot_) + vector_bytes(frag_created_) +
+                      vector_bytes(frag_replaced_);
+  for (const auto& list : frag_created_) total += vector_bytes(list);
+  for (const auto& list : frag_replaced_) total += vector_bytes(list);
+  return total;
+}
+
+std::vector<OrientedFace> outer_faces(const Mt& mt, std::span<const TetId> tets) {
+  std::vector<OrientedFace> faces;
+  faces.reserve(4 * tets.size());
+  for (TetId t : tets) {
+    const Tet& v = mt.tet(t);
+    for (int f = 0; f < 4; ++f) {
+      OrientedFace face;
+      face.verts = face_vertices(v, f);
+      face.sorted = face.verts;
+      std::sort(face.sorted.begin(), face.sorted.end());
+      face.tet = t;
+      face.local_face = f;
+      faces.push_back(face);
+    }
+  }
+  std::sort(faces.begin(), faces.end(), [](const OrientedFace& a, const OrientedFace& b) {
+    return a.sorted < b.sorted || (a.sorted == b.sorted && a.tet < b.tet);
+  });
+  std::vector<OrientedFace> outer;
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].sorted == faces[i].sorted) ++j;
+    if (j - i == 1) outer.push_back(faces[i]);
+    i = j;
+  }
+  return outer;
+}
+
+}  // namespace mtcut::engine

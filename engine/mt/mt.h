@@ -1,0 +1,156 @@
+#pragma once
+// The Multi-Tessellation (paper, section 3): every resolution of a tet mesh
+// in one structure.
+//
+// Why this shape. The paper's MT is a DAG whose nodes are fragments (the tets
+// one simplification step creates) and whose arcs are labelled with the tets
+// a step replaces. mtcut stores the paper's *expanded* arc list (section 4):
+// each tet t is the arc (birth(t), death(t)) -- the fragment that creates it
+// and the fragment that replaces it. Everything else is derived:
+//   created(f)  = { t : birth(t) == f }   replaced(f) = { t : death(t) == f }
+//   parents(f)  = births of replaced(f)   children(f) = deaths of created(f)
+// The root creates the finest mesh and replaces nothing; the drain replaces
+// the coarsest mesh and creates nothing.
+//
+// The cutter (cut/) edits the MT at every resolution: it appends vertices and
+// tets (a cut tet's pieces are born and die in the same fragments as the tet),
+// kills the tet they replace, appends fragments when a fragment falls apart,
+// and moves tets between fragments (set_birth / set_death) to re-attach arcs.
+// So: vertices, tets and fragments are appendable arrays addressed by handles;
+// a tet is never erased, only killed (birth = none); and the per-fragment
+// lists are kept in step with birth/death in O(1) per change by storing each
+// tet's slot in both lists (swap-remove with a back-index fix).
+//
+// Hot per-tet data (vertices, birth, death, error) is struct-of-arrays: the
+// frontier and the cutter stream through it.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/ids.h"
+#include "engine/tet_mesh.h"
+#include "engine/validation.h"
+
+namespace mtcut::engine {
+
+// Bit i set: face i of the tet (opposite vertex i, kTetFaces) lies on the
+// surface of the object, in every frontier that holds the tet. Faces made by
+// a cut are surface faces too.
+using FaceMask = std::uint8_t;
+
+class Frontier;
+
+class Mt {
+ public:
+  // An MT holding only the root fragment, which creates `fine` (boundary masks
+  // derived from its face adjacency), with no death yet: the state the builder
+  // starts from. `boundary_preserved` records a promise of the builder: every
+  // frontier covers exactly the fine mesh's domain.
+  static Mt from_fine_mesh(const TetMesh& fine);
+
+  // --- vertices: shared by all resolutions, rest positions
+  std::size_t num_vertices() const { return positions_.size(); }
+  const Vec3& position(VertId v) const { return positions_[v.index()]; }
+  std::span<const Vec3> positions() const { return positions_; }
+  VertId add_vertex(const Vec3& rest_position);
+
+  // --- tets: slots 0..num_tets()-1, dead ones included
+  std::size_t num_tets() const { return tet_verts_.size(); }
+  std::size_t num_live_tets() const { return live_tets_; }
+  const Tet& tet(TetId t) const { return tet_verts_[t.index()]; }
+  FragId birth(TetId t) const { return tet_birth_[t.index()]; }
+  FragId death(TetId t) const { return tet_death_[t.index()]; }
+  float error(TetId t) const { return tet_error_[t.index()]; }
+  FaceMask boundary_mask(TetId t) const { return tet_boundary_[t.index()]; }
+  bool alive(TetId t) const { return tet_birth_[t.index()].valid(); }
+  std::array<Vec3, 4> corners(TetId t) const;
+  double volume(TetId t) const;
+
+  // Appends a tet (positively oriented) created by `birth` and replaced by
+  // `death` (none while the builder has not decided yet). Its error is
+  // computed from the positions (tet_error.h).
+  TetId add_tet(const Tet& verts, FragId birth, FragId death, FaceMask boundary);
+  // Removes t from the MT: it leaves its fragments' lists; the slot stays.
+  void kill_tet(TetId t);
+  // Moves t to another creating / replacing fragment (re-attaching an arc).
+  void set_birth(TetId t, FragId f);
+  void set_death(TetId t, FragId f);
+  void set_boundary_mask(TetId t, FaceMask mask) { tet_boundary_[t.index()] = mask; }
+
+  // --- fragments
+  std::size_t num_fragments() const { return frag_created_.size(); }
+  FragId root() const { return root_; }
+  FragId drain() const { return drain_; }
+  std::span<const TetId> created(FragId f) const { return frag_created_[f.index()]; }
+  std::span<const TetId> replaced(FragId f) const { return frag_replaced_[f.index()]; }
+  // Largest error of the tets f creates (0 when it creates none).
+  float fragment_error(FragId f) const;
+  FragId add_fragment();
+  void set_drain(FragId f) { drain_ = f; }
+  // Distinct births of replaced(f) / deaths of created(f), ascending.
+  std::vector<FragId> parents(FragId f) const;
+  std::vector<FragId> children(FragId f) const;
+
+  // --- whole-MT facts
+  double fine_volume() const { return fine_volume_; }
+  bool boundary_preserved() const { return boundary_preserved_; }
+  void set_boundary_preserved(bool preserved) { boundary_preserved_ = preserved; }
+  // Incremented by every mutation: derived indexes (BVHs, cached orders)
+  // compare it to know they are stale.
+  std::uint64_t revision() const { return revision_; }
+  // Heap bytes held by the MT's arrays.
+  std::size_t bytes() const;
+
+  // Fragments in an order where every parent precedes its children (Kahn's
+  // algorithm from the root); fragments unreachable from the root, or on a
+  // cycle, are missing from it (validate() reports them).
+  std::vector<FragId> topological_order() const;
+
+  // The structure and every fragment (mt_validate.cpp): the DAG is acyclic
+  // with one root and one drain; lists agree with birth/death; every live
+  // tet is positive, born before it dies; every fragment replaces a region
+  // by a conforming tessellation of the same region (same outer faces, same
+  // volume when the boundary is preserved); and the finest and coarsest
+  // frontiers are conforming tessellations of the domain (validate_frontier).
+  ValidationReport validate() const;
+
+ private:
+  static void erase_from(std::vector<std::vector<TetId>>& lists, std::vector<std::int32_t>& slots, FragId f,
+                         TetId t);
+
+  std::vector<Vec3> positions_;  // (n_vertices) rest positions
+
+  std::vector<Tet> tet_verts_;                  // (n_tets) positively oriented
+  std::vector<FragId> tet_birth_;               // (n_tets) creating fragment; none = dead tet
+  std::vector<FragId> tet_death_;               // (n_tets) replacing fragment; none while building
+  std::vector<float> tet_error_;                // (n_tets) e(t), tet_error.h
+  std::vector<FaceMask> tet_boundary_;          // (n_tets) surface faces
+  std::vector<std::int32_t> tet_birth_slot_;    // (n_tets) index of t in created(birth(t))
+  std::vector<std::int32_t> tet_death_slot_;    // (n_tets) index of t in replaced(death(t)), -1 if none
+
+  std::vector<std::vector<TetId>> frag_created_;   // (n_fragments) tets each fragment creates
+  std::vector<std::vector<TetId>> frag_replaced_;  // (n_fragments) tets each fragment replaces
+
+  FragId root_;
+  FragId drain_;
+  std::size_t live_tets_ = 0;
+  double fine_volume_ = 0.0;
+  bool boundary_preserved_ = true;
+  std::uint64_t revision_ = 0;
+};
+
+// The faces of a set of tets that no other tet of the set shares, each as
+// (sorted vertex ids) with the orientation seen from its tet: the outer
+// surface of a region. Used by validation (a fragment's outer surface must
+// equal that of the region it replaces) and by the frontier.
+struct OrientedFace {
+  std::array<VertId, 3> sorted;  // ascending ids: the key
+  std::array<VertId, 3> verts;   // outward orientation
+  TetId tet;
+  int local_face;
+};
+std::vector<OrientedFace> outer_faces(const Mt& mt, std::span<const TetId> tets);
+
+}  // namespace mtcut::engine

@@ -1,0 +1,138 @@
+// Mt::validate(): the structure, the DAG, every fragment, and the finest and
+// coarsest frontiers. Run in tests after every mutation.
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "engine/mt/frontier.h"
+#include "engine/mt/mt.h"
+#include "engine/mt/tet_error.h"
+
+namespace mtcut::engine {
+namespace {
+
+std::string str(std::int32_t v) { return std::to_string(v); }
+
+// Tets and lists agree; every live tet is positive and born before it dies.
+void check_tets(const Mt& mt, ValidationReport& report) {
+  const auto nf = static_cast<std::int32_t>(mt.num_fragments());
+  const auto nv = static_cast<std::int32_t>(mt.num_vertices());
+  std::size_t alive = 0;
+  for (std::size_t i = 0; i < mt.num_tets(); ++i) {
+    const TetId t(i);
+    if (!mt.alive(t)) continue;
+    ++alive;
+    const std::string tn = "tet " + str(t.value);
+    const FragId b = mt.birth(t), d = mt.death(t);
+    if (b.value >= nf || d.value >= nf || !d.valid()) {
+      report.add(tn + " has birth " + str(b.value) + " and death " + str(d.value) + " (" + str(nf) + " fragments)");
+      continue;
+    }
+    if (b == d) report.add(tn + " is born and dies in fragment " + str(b.value));
+    const Tet& v = mt.tet(t);
+    bool ids_ok = true;
+    for (VertId id : v) ids_ok = ids_ok && id.valid() && id.value < nv;
+    if (!ids_ok) {
+      report.add(tn + " refers to a vertex out of range");
+      continue;
+    }
+    if (v[0] == v[1] || v[0] == v[2] || v[0] == v[3] || v[1] == v[2] || v[1] == v[3] || v[2] == v[3])
+      report.add(tn + " repeats a vertex");
+    const auto c = mt.corners(t);
+    if (orient3d_sign(c[0], c[1], c[2], c[3]) <= 0) report.add(tn + " is not positively oriented");
+    if (mt.error(t) != tet_error(c[0], c[1], c[2], c[3])) report.add(tn + " has a stale error");
+  }
+  // Every live tet once in created(birth) and once in replaced(death), nothing else listed.
+  std::vector<char> in_created(mt.num_tets(), 0), in_replaced(mt.num_tets(), 0);
+  for (std::size_t f = 0; f < mt.num_fragments(); ++f) {
+    for (TetId t : mt.created(FragId(f))) {
+      if (t.index() >= mt.num_tets() || !mt.alive(t) || mt.birth(t) != FragId(f) || in_created[t.index()]++)
+        report.add("created(" + std::to_string(f) + ") lists tet " + str(t.value) + " which it does not create");
+    }
+    for (TetId t : mt.replaced(FragId(f))) {
+      if (t.index() >= mt.num_tets() || !mt.alive(t) || mt.death(t) != FragId(f) || in_replaced[t.index()]++)
+        report.add("replaced(" + std::to_string(f) + ") lists tet " + str(t.value) + " which it does not replace");
+    }
+  }
+  for (std::size_t i = 0; i < mt.num_tets(); ++i) {
+    if (!mt.alive(TetId(i))) continue;
+    if (!in_created[i]) report.add("tet " + std::to_string(i) + " is missing from created(" + str(mt.birth(TetId(i)).value) + ")");
+    if (!in_replaced[i]) report.add("tet " + std::to_string(i) + " is missing from replaced(" + str(mt.death(TetId(i)).value) + ")");
+  }
+  if (alive != mt.num_live_tets())
+    report.add(std::to_string(alive) + " live tets, " + std::to_string(mt.num_live_tets()) + " counted");
+}
+
+// One root, one drain, acyclic, every fragment on a path root -> drain.
+void check_dag(const Mt& mt, ValidationReport& report) {
+  const FragId root = mt.root(), drain = mt.drain();
+  if (!root.valid() || root.index() >= mt.num_fragments() || !drain.valid() || drain.index() >= mt.num_fragments() ||
+      root == drain) {
+    report.add("the MT has no distinct root and drain (root " + str(root.value) + ", drain " + str(drain.value) + ")");
+    return;
+  }
+  if (!mt.replaced(root).empty()) report.add("the root replaces tets");
+  if (!mt.created(drain).empty()) report.add("the drain creates tets");
+  for (std::size_t i = 0; i < mt.num_fragments(); ++i) {
+    const FragId f(i);
+    if (f != root && mt.replaced(f).empty())
+      report.add("fragment " + str(f.value) + " replaces nothing (a second root)");
+    if (f != drain && mt.created(f).empty())
+      report.add("fragment " + str(f.value) + " creates nothing (a second drain)");
+  }
+  const std::vector<FragId> order = mt.topological_order();
+  if (order.size() != mt.num_fragments())
+    report.add(str(static_cast<std::int32_t>(mt.num_fragments() - order.size())) +
+               " fragments are on a cycle or not reachable from the root");
+}
+
+// Each fragment replaces a region by a tessellation of the same region: the
+// faces of the region's outer surface that are inside the object are the same,
+// with the same orientation; with a preserved boundary the volume too.
+void check_fragments(const Mt& mt, ValidationReport& report) {
+  const auto inner = [&](std::span<const TetId> tets) {
+    std::vector<std::array<VertId, 3>> faces;
+    for (const OrientedFace& face : outer_faces(mt, tets))
+      if (!(mt.boundary_mask(face.tet) & (1u << face.local_face))) {
+        // Rotate so the smallest id comes first: orientation-preserving key.
+        auto v = face.verts;
+        std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
+        faces.push_back(v);
+      }
+    std::sort(faces.begin(), faces.end());
+    return faces;
+  };
+  for (std::size_t i = 0; i < mt.num_fragments(); ++i) {
+    const FragId f(i);
+    if (f == mt.root() || f == mt.drain()) continue;
+    if (inner(mt.created(f)) != inner(mt.replaced(f)))
+      report.add("fragment " + str(f.value) + ": its tets do not fill the region of the tets it replaces");
+    if (mt.boundary_preserved()) {
+      double before = 0, after = 0;
+      for (TetId t : mt.replaced(f)) before += mt.volume(t);
+      for (TetId t : mt.created(f)) after += mt.volume(t);
+      if (!(std::abs(after - before) <= 1e-9 * before))
+        report.add("fragment " + str(f.value) + " changes the volume from " + std::to_string(before) + " to " +
+                   std::to_string(after));
+    }
+  }
+}
+
+}  // namespace
+
+ValidationReport Mt::validate() const {
+  ValidationReport report;
+  check_tets(*this, report);
+  if (!report.ok()) return report;
+  check_dag(*this, report);
+  if (!report.ok()) return report;
+  check_fragments(*this, report);
+  for (const auto& problem : validate_frontier(*this, Frontier::finest(*this)).problems)
+    report.add("finest " + problem);
+  for (const auto& problem : validate_frontier(*this, Frontier::coarsest(*this)).problems)
+    report.add("coarsest " + problem);
+  return report;
+}
+
+}  // namespace mtcut::engine

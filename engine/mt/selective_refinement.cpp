@@ -1,0 +1,216 @@
+#include "engine/mt/selective_refinement.h"
+
+#include <algorithm>
+
+#include "engine/mt/tet_bvh.h"
+
+namespace mtcut::engine {
+namespace {
+
+// +1: every fragment under a box with errors in [lo, hi] meets the field;
+// -1: every one fails; 0: cannot tell. See the header for why this is sound.
+int box_status(const Aabb& box, float lo, float hi, const ErrorField& field, const Vec3& focus) {
+  if (static_cast<double>(hi) <= field.threshold(box.min_distance(focus))) return 1;
+  if (static_cast<double>(lo) > field.threshold(box.max_distance(focus))) return -1;
+  return 0;
+}
+
+// Membership of S*, given each fragment's status.
+std::vector<char> target_membership(const Mt& mt, const std::vector<FragId>& order, const std::vector<char>& meets) {
+  std::vector<char> in(mt.num_fragments(), 0);
+  for (FragId f : order) {
+    if (f == mt.root()) {
+      in[f.index()] = 1;
+      continue;
+    }
+    if (f == mt.drain() || !meets[f.index()]) continue;
+    bool parents_in = true;
+    for (TetId t : mt.replaced(f)) parents_in = parents_in && in[mt.birth(t).index()];
+    in[f.index()] = parents_in;
+  }
+  return in;
+}
+
+}  // namespace
+
+bool tet_meets(const Mt& mt, TetId t, const ErrorField& field) {
+  return static_cast<double>(mt.error(t)) <= field.threshold(tet_box(mt, t).min_distance(field.focus));
+}
+
+bool fragment_meets(const Mt& mt, FragId f, const ErrorField& field) {
+  const auto created = mt.created(f);
+  return std::all_of(created.begin(), created.end(), [&](TetId t) { return tet_meets(mt, t, field); });
+}
+
+std::vector<FragId> target_fragments(const Mt& mt, const ErrorField& field) {
+  std::vector<char> meets(mt.num_fragments(), 0);
+  for (std::size_t f = 0; f < mt.num_fragments(); ++f) meets[f] = fragment_meets(mt, FragId(f), field);
+  const std::vector<char> in = target_membership(mt, mt.topological_order(), meets);
+  std::vector<FragId> out;
+  for (std::size_t f = 0; f < in.size(); ++f)
+    if (in[f]) out.emplace_back(f);
+  return out;
+}
+
+Frontier extract_frontier(const Mt& mt, const ErrorField& field) {
+  return Frontier::from_fragments(mt, target_fragments(mt, field));
+}
+
+std::size_t SelectiveRefiner::bytes() const {
+  return bvh_.bytes() + indexed_.capacity() * sizeof(FragId) + (frag_box_.capacity() + worst_box_.capacity()) * sizeof(Aabb) +
+         (frag_error_.capacity() + node_min_.capacity() + node_max_.capacity()) * sizeof(float) + meets_.capacity();
+}
+
+void SelectiveRefiner::rebuild_index(const Mt& mt) {
+  indexed_.clear(), frag_box_.clear(), worst_box_.clear(), frag_error_.clear();
+  for (std::size_t i = 0; i < mt.num_fragments(); ++i) {
+    const FragId f(i);
+    if (f == mt.root() || f == mt.drain() || mt.created(f).empty()) continue;
+    Aabb box;
+    TetId worst = mt.created(f).front();
+    for (TetId t : mt.created(f)) {
+      box.extend(tet_box(mt, t));
+      if (mt.error(t) > mt.error(worst)) worst = t;
+    }
+    indexed_.push_back(f);
+    frag_box_.push_back(box);
+    worst_box_.push_back(tet_box(mt, worst));
+    frag_error_.push_back(mt.error(worst));
+  }
+  bvh_.build(frag_box_, 2);
+  // Error bounds bottom-up: children always follow their parent in the array.
+  const auto nodes = bvh_.nodes();
+  node_min_.assign(nodes.size(), 0.0f);
+  node_max_.assign(nodes.size(), 0.0f);
+  for (std::size_t n = nodes.size(); n-- > 0;) {
+    const BvhNode& node = nodes[n];
+    if (node.leaf()) {
+      float lo = frag_error_[static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(node.first)])], hi = lo;
+      for (std::int32_t i = node.first; i < node.first + node.count; ++i) {
+        const float e = frag_error_[static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(i)])];
+        lo = std::min(lo, e), hi = std::max(hi, e);
+      }
+      node_min_[n] = lo, node_max_[n] = hi;
+    } else {
+      const auto l = static_cast<std::size_t>(node.first);
+      node_min_[n] = std::min(node_min_[l], node_min_[l + 1]);
+      node_max_[n] = std::max(node_max_[l], node_max_[l + 1]);
+    }
+  }
+  index_revision_ = mt.revision();
+}
+
+SelectiveRefiner::Stats SelectiveRefiner::update(const Mt& mt, const ErrorField& field, Frontier& frontier) {
+  Stats stats;
+  if (index_revision_ != mt.revision()) {
+    rebuild_index(mt);
+    have_last_ = false;
+  }
+  frontier.sync(mt);
+  const bool incremental = have_last_ && mt_revision_ == mt.revision() &&
+                           frontier_version_ == frontier.version() && last_field_.same_shape(field);
+  if (incremental) {
+    incremental_update(mt, field, frontier, stats);
+  } else {
+    full_update(mt, field, frontier, stats);
+  }
+  stats.incremental = incremental;
+  last_field_ = field;
+  have_last_ = true;
+  mt_revision_ = mt.revision();
+  frontier_version_ = frontier.version();
+  return stats;
+}
+
+void SelectiveRefiner::full_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats) {
+  meets_.assign(mt.num_fragments(), 0);
+  for (std::size_t f = 0; f < mt.num_fragments(); ++f) meets_[f] = fragment_meets(mt, FragId(f), field);
+  stats.fragments_tested = mt.num_fragments();
+  const std::vector<FragId> order = mt.topological_order();
+  const std::vector<char> in = target_membership(mt, order, meets_);
+  // Leave S \ S* children first, then enter S* \ S parents first: every
+  // step is a valid refine / coarsen because both sets are parent-closed.
+  for (auto it = order.rbegin(); it != order.rend(); ++it)
+    if (frontier.contains(*it) && !in[it->index()]) {
+      frontier.refine(mt, *it);
+      ++stats.refined;
+    }
+  for (FragId f : order)
+    if (in[f.index()] && !frontier.contains(f)) {
+      frontier.coarsen(mt, f);
+      ++stats.coarsened;
+    }
+}
+
+void SelectiveRefiner::incremental_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats) {
+  const Vec3 from = last_field_.focus, to = field.focus;
+  changed_bad_.clear(), changed_good_.clear();
+  const auto nodes = bvh_.nodes();
+  const auto unchanged = [&](const Aabb& box, float lo, float hi) {
+    const int before = box_status(box, lo, hi, field, from);
+    return before != 0 && before == box_status(box, lo, hi, field, to);
+  };
+  bvh_.walk(
+      [&](std::int32_t n) {
+        ++stats.nodes_visited;
+        const auto i = static_cast<std::size_t>(n);
+        return !unchanged(nodes[i].box, node_min_[i], node_max_[i]);
+      },
+      [&](std::int32_t n) {
+        const BvhNode& node = nodes[static_cast<std::size_t>(n)];
+        for (std::int32_t k = node.first; k < node.first + node.count; ++k) {
+          const auto item = static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(k)]);
+          if (unchanged(frag_box_[item], frag_error_[item], frag_error_[item])) continue;
+          // The largest-error tet decides "fails" exactly (tet_meets' own test).
+          const double e = frag_error_[item];
+          const bool fails_before = e > field.threshold(worst_box_[item].min_distance(from));
+          const bool fails_after = e > field.threshold(worst_box_[item].min_distance(to));
+          if (fails_before && fails_after) continue;
+          const FragId f = indexed_[item];
+          ++stats.fragments_tested;
+          const char now = fragment_meets(mt, f, field);
+          if (now == meets_[f.index()]) continue;
+          meets_[f.index()] = now;
+          ++stats.status_changes;
+          (now ? changed_good_ : changed_bad_).push_back(f);
+        }
+        return true;
+      });
+
+  // Fragments that now fail leave, and everything that depends on them.
+  for (FragId f : changed_bad_)
+    if (frontier.contains(f)) refine_with_descendants(mt, f, frontier, stats);
+  // Fragments that now meet enter once their parents are in; their children
+  // may follow.
+  queue_.assign(changed_good_.begin(), changed_good_.end());
+  while (!queue_.empty()) {
+    const FragId f = queue_.back();
+    queue_.pop_back();
+    if (!meets_[f.index()] || !frontier.can_coarsen(mt, f)) continue;
+    frontier.coarsen(mt, f);
+    ++stats.coarsened;
+    for (FragId c : mt.children(f))
+      if (c != mt.drain() && meets_[c.index()]) queue_.push_back(c);
+  }
+}
+
+void SelectiveRefiner::refine_with_descendants(const Mt& mt, FragId f, Frontier& frontier, Stats& stats) {
+  // Post-order over the part of S below f: a fragment leaves after all its
+  // children in S have.
+  std::vector<std::pair<FragId, bool>> stack = {{f, false}};
+  while (!stack.empty()) {
+    const auto [g, expanded] = stack.back();
+    stack.pop_back();
+    if (!frontier.contains(g)) continue;
+    if (expanded) {
+      frontier.refine(mt, g);
+      ++stats.refined;
+      continue;
+    }
+    stack.emplace_back(g, true);
+    for (FragId c : mt.children(g))
+      if (frontier.contains(c)) stack.emplace_back(c, false);
+  }
+}
+
+}  // namespace mtcut::engine

@@ -1,0 +1,112 @@
+#pragma once
+// Selective refinement: the frontier that a position-dependent error
+// threshold asks for, reached incrementally as the focus (the scalpel) moves.
+//
+// The threshold. At distance d from the focus, tets may have error up to
+//     threshold(d) = near_error + growth * max(0, d - radius)
+// (uniform when growth = 0). A tet meets the field when e(t) <= threshold(d),
+// d measured from the focus to the tet's bounding box (its nearest part). A
+// fragment meets it when every tet it creates does.
+//
+// The target. S* = the fragments f such that f and all its ancestors meet
+// the field: the largest parent-closed set of fragments that all meet it,
+// i.e. the coarsest frontier every tet of which (the fine ones aside) meets
+// the field. It is unique, so an incremental update and an extraction from
+// scratch can and must agree exactly. Uniform error 0 gives the fine mesh,
+// +inf the coarsest.
+//
+// Why incremental. When the focus moves from c0 to c1, a fragment can change
+// status only if some tet of it meets the field at one focus and not at the
+// other. A BVH over fragments, each node carrying the least and largest
+// fragment error below it, proves for whole subtrees that every fragment
+// meets (largest error <= threshold at the nearest distance) or fails
+// (least error > threshold at the farthest distance) at both foci, and
+// skips them. A fragment itself also keeps the box of its largest-error tet:
+// that tet fails exactly when the focus is within its own reach, which
+// settles most fragments near the focus without looking at their tets.
+// Then S moves from S*(c0) to S*(c1): fragments that now fail
+// are refined away with their descendants, fragments that now meet are
+// added when their parents are in, and their children after them.
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/mt/bvh.h"
+#include "engine/mt/frontier.h"
+#include "engine/mt/mt.h"
+
+namespace mtcut::engine {
+
+struct ErrorField {
+  Vec3 focus = Vec3::Zero();
+  double radius = 0.0;      // within it, near_error applies
+  double near_error = 0.0;  // error allowed at the focus (metres)
+  double growth = 0.0;      // error allowed per metre beyond the radius
+
+  static ErrorField uniform(double max_error) {
+    ErrorField field;
+    field.near_error = max_error;
+    return field;
+  }
+  double threshold(double distance) const {
+    return near_error + growth * std::max(0.0, distance - radius);
+  }
+  // Same threshold function around a possibly different focus.
+  bool same_shape(const ErrorField& o) const {
+    return radius == o.radius && near_error == o.near_error && growth == o.growth;
+  }
+};
+
+bool tet_meets(const Mt& mt, TetId t, const ErrorField& field);
+bool fragment_meets(const Mt& mt, FragId f, const ErrorField& field);
+
+// S* (see above), ascending.
+std::vector<FragId> target_fragments(const Mt& mt, const ErrorField& field);
+// The frontier of S*, from scratch.
+Frontier extract_frontier(const Mt& mt, const ErrorField& field);
+// Every tet of error <= max_error where the MT has one: 0 the fine mesh,
+// +inf the coarsest.
+inline Frontier extract_uniform(const Mt& mt, double max_error) {
+  return extract_frontier(mt, ErrorField::uniform(max_error));
+}
+
+class SelectiveRefiner {
+ public:
+  struct Stats {
+    bool incremental = false;         // false: a full pass was needed
+    std::size_t nodes_visited = 0;    // BVH nodes looked at
+    std::size_t fragments_tested = 0;
+    std::size_t status_changes = 0;
+    std::size_t refined = 0;
+    std::size_t coarsened = 0;
+  };
+
+  // Moves `frontier` to S*(field). Incremental when the MT, the frontier and
+  // the field's shape are as this refiner's previous call left them (only
+  // the focus moved); otherwise one full pass over the fragments.
+  Stats update(const Mt& mt, const ErrorField& field, Frontier& frontier);
+  std::size_t bytes() const;
+
+ private:
+  void rebuild_index(const Mt& mt);
+  void full_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats);
+  void incremental_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats);
+  void refine_with_descendants(const Mt& mt, FragId f, Frontier& frontier, Stats& stats);
+
+  Bvh bvh_;                         // over indexed fragments
+  std::vector<FragId> indexed_;     // (n_items) fragment of each BVH item
+  std::vector<Aabb> frag_box_;      // (n_items) box of its created tets
+  std::vector<Aabb> worst_box_;     // (n_items) box of its largest-error tet
+  std::vector<float> frag_error_;   // (n_items) its error
+  std::vector<float> node_min_;     // (n_nodes) least fragment error below
+  std::vector<float> node_max_;     // (n_nodes) largest fragment error below
+  std::vector<char> meets_;         // (n_fragments) status under last_field_
+  ErrorField last_field_;
+  bool have_last_ = false;
+  std::uint64_t mt_revision_ = 0;
+  std::uint64_t index_revision_ = ~std::uint64_t{0};
+  std::uint64_t frontier_version_ = 0;
+  std::vector<FragId> changed_bad_, changed_good_, queue_;  // scratch
+};
+
+}  // namespace mtcut::engine

@@ -1,0 +1,127 @@
+#include "engine/mt/tet_bvh.h"
+
+#include <cassert>
+
+#include "engine/mt/frontier.h"
+
+namespace mtcut::engine {
+
+Aabb tet_box(const Mt& mt, TetId t) {
+  Aabb box;
+  for (VertId v : mt.tet(t)) box.extend(mt.position(v));
+  return box;
+}
+
+bool tet_contains(const Mt& mt, TetId t, const Vec3& p) {
+  const auto c = mt.corners(t);
+  return orient3d_sign(p, c[1], c[2], c[3]) >= 0 && orient3d_sign(c[0], p, c[2], c[3]) >= 0 &&
+         orient3d_sign(c[0], c[1], p, c[3]) >= 0 && orient3d_sign(c[0], c[1], c[2], p) >= 0;
+}
+
+void TetBvh::rebuild(const Mt& mt) {
+  std::vector<Aabb> boxes;
+  std::vector<std::int32_t> ids;
+  boxes.reserve(mt.num_live_tets());
+  ids.reserve(mt.num_live_tets());
+  for (std::size_t i = 0; i < mt.num_tets(); ++i) {
+    if (!mt.alive(TetId(i))) continue;
+    boxes.push_back(tet_box(mt, TetId(i)));
+    ids.push_back(static_cast<std::int32_t>(i));
+  }
+  bvh_.build(boxes);
+  const auto items = bvh_.items();
+  slot_tet_.resize(items.size());
+  where_.assign(mt.num_tets(), -1);
+  for (std::size_t s = 0; s < items.size(); ++s) {
+    slot_tet_[s] = ids[static_cast<std::size_t>(items[s])];
+    where_[static_cast<std::size_t>(slot_tet_[s])] = static_cast<std::int32_t>(s);
+  }
+  extra_head_.assign(bvh_.nodes().size(), -1);
+  extra_tet_.clear();
+  extra_next_.clear();
+  indexed_ = ids.size();
+  edits_ = 0;
+}
+
+std::size_t TetBvh::bytes() const {
+  return bvh_.bytes() + (slot_tet_.capacity() + extra_head_.capacity() + extra_tet_.capacity() +
+                         extra_next_.capacity() + where_.capacity()) * sizeof(std::int32_t);
+}
+
+TetId TetBvh::locate(const Mt& mt, const Vec3& p) const {
+  TetId found;
+  for_each_containing(mt, p, [&](TetId t) {
+    found = t;
+    return false;
+  });
+  return found;
+}
+
+TetId TetBvh::locate_in(const Mt& mt, const Frontier& frontier, const Vec3& p) const {
+  TetId found;
+  const auto nodes = bvh_.nodes();
+  bvh_.walk([&](std::int32_t n) { return nodes[static_cast<std::size_t>(n)].box.contains(p); },
+            [&](std::int32_t n) {
+              return visit_leaf(n, [&](TetId t) {
+                if (!frontier.has_tet(t) || !tet_contains(mt, t, p)) return true;
+                found = t;
+                return false;
+              });
+            });
+  return found;
+}
+
+void TetBvh::remove(TetId t) {
+  if (t.index() >= where_.size() || where_[t.index()] == -1) return;
+  const std::int32_t w = where_[t.index()];
+  if (w >= 0) {
+    slot_tet_[static_cast<std::size_t>(w)] = -1;
+  } else {
+    extra_tet_[static_cast<std::size_t>(-w - 2)] = -1;
+  }
+  where_[t.index()] = -1;
+  --indexed_;
+  ++edits_;
+}
+
+void TetBvh::insert(const Mt& mt, TetId t) {
+  assert(mt.alive(t));
+  if (bvh_.empty()) {
+    rebuild(mt);
+    return;
+  }
+  if (where_.size() < mt.num_tets()) where_.resize(mt.num_tets(), -1);
+  if (where_[t.index()] != -1) return;
+  const Aabb box = tet_box(mt, t);
+  // Down one path, growing each box on it, towards the child that grows least.
+  auto nodes = bvh_.mutable_nodes();
+  std::size_t n = 0;
+  for (;;) {
+    nodes[n].box.extend(box);
+    if (nodes[n].leaf()) break;
+    const auto left = static_cast<std::size_t>(nodes[n].first);
+    Aabb grown_left = nodes[left].box, grown_right = nodes[left + 1].box;
+    grown_left.extend(box), grown_right.extend(box);
+    const double cost_left = grown_left.volume() - nodes[left].box.volume();
+    const double cost_right = grown_right.volume() - nodes[left + 1].box.volume();
+    n = cost_left <= cost_right ? left : left + 1;
+  }
+  const auto e = static_cast<std::int32_t>(extra_tet_.size());
+  extra_tet_.push_back(t.value);
+  extra_next_.push_back(extra_head_[n]);
+  extra_head_[n] = e;
+  where_[t.index()] = -e - 2;
+  ++indexed_;
+  ++edits_;
+}
+
+void TetBvh::replace(const Mt& mt, TetId old, std::span<const TetId> pieces) {
+  remove(old);
+  if (edits_ + pieces.size() > indexed_ / 2 + 64) {
+    rebuild(mt);  // takes every live tet, the pieces included
+    return;
+  }
+  for (TetId t : pieces) insert(mt, t);
+}
+
+}  // namespace mtcut::engine

@@ -1,0 +1,98 @@
+#pragma once
+// Point location over the MT's tets in rest space, at every resolution at
+// once, and in a frontier.
+//
+// Why this shape. The cutter must find every MT tet a cut polygon crosses,
+// in every fragment (paper, section 4, step 1), and replace each by its
+// pieces; the simulator must find the frontier tet holding a point (to
+// carry a hidden vertex). One BVH over all live tets serves both: a
+// frontier query is the same walk with a membership filter (a point lies
+// in one tet per resolution that differs there, a few dozen at most). The
+// cutter's replacements are applied in place (remove + insert, which only
+// grows boxes on one root-to-leaf path) and the tree is rebuilt once the
+// edits outnumber half the tets.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/mt/bvh.h"
+#include "engine/mt/mt.h"
+
+namespace mtcut::engine {
+
+class Frontier;
+
+// The box of tet t's corners.
+Aabb tet_box(const Mt& mt, TetId t);
+// p lies in the closed tet t (exact orientation tests).
+bool tet_contains(const Mt& mt, TetId t, const Vec3& p);
+
+class TetBvh {
+ public:
+  TetBvh() = default;
+  explicit TetBvh(const Mt& mt) { rebuild(mt); }
+  // Over all live tets of the MT.
+  void rebuild(const Mt& mt);
+
+  // Live tets in the index (tombstones excluded).
+  std::size_t size() const { return indexed_; }
+  std::size_t bytes() const;
+
+  // Every indexed tet whose box overlaps `box` (candidates: the caller tests
+  // the exact geometry). visit(TetId) returns false to stop.
+  template <class Visit>
+  void for_each_overlapping(const Mt& mt, const Aabb& box, Visit&& visit) const {
+    const auto nodes = bvh_.nodes();
+    bvh_.walk([&](std::int32_t n) { return nodes[static_cast<std::size_t>(n)].box.overlaps(box); },
+              [&](std::int32_t n) {
+                return visit_leaf(n, [&](TetId t) { return !tet_box(mt, t).overlaps(box) || visit(t); });
+              });
+  }
+  // Every indexed tet holding p (closed tets, exact).
+  template <class Visit>
+  void for_each_containing(const Mt& mt, const Vec3& p, Visit&& visit) const {
+    const auto nodes = bvh_.nodes();
+    bvh_.walk([&](std::int32_t n) { return nodes[static_cast<std::size_t>(n)].box.contains(p); },
+              [&](std::int32_t n) {
+                return visit_leaf(n, [&](TetId t) { return !tet_contains(mt, t, p) || visit(t); });
+              });
+  }
+  // A tet of the whole MT holding p (none outside the object).
+  TetId locate(const Mt& mt, const Vec3& p) const;
+  // The frontier tet holding p (none outside the frontier's mesh).
+  TetId locate_in(const Mt& mt, const Frontier& frontier, const Vec3& p) const;
+
+  // Edits that follow the MT's, made after it: t left the MT / t joined it;
+  // `pieces` took the place of `old` (the cutter's R(t); old already killed,
+  // pieces already added). Rebuilds when edits pile up.
+  void remove(TetId t);
+  void insert(const Mt& mt, TetId t);
+  void replace(const Mt& mt, TetId old, std::span<const TetId> pieces);
+
+ private:
+  template <class Visit>
+  bool visit_leaf(std::int32_t n, Visit&& visit) const {
+    const BvhNode& node = bvh_.nodes()[static_cast<std::size_t>(n)];
+    for (std::int32_t i = node.first; i < node.first + node.count; ++i) {
+      const std::int32_t t = slot_tet_[static_cast<std::size_t>(i)];
+      if (t >= 0 && !visit(TetId(t))) return false;
+    }
+    for (std::int32_t e = extra_head_[static_cast<std::size_t>(n)]; e >= 0; e = extra_next_[static_cast<std::size_t>(e)]) {
+      const std::int32_t t = extra_tet_[static_cast<std::size_t>(e)];
+      if (t >= 0 && !visit(TetId(t))) return false;
+    }
+    return true;
+  }
+
+  Bvh bvh_;
+  std::vector<std::int32_t> slot_tet_;    // (n_slots) tet in each leaf slot, -1 = removed
+  std::vector<std::int32_t> extra_head_;  // (n_nodes) first inserted tet of a leaf, -1 = none
+  std::vector<std::int32_t> extra_tet_;   // (n_extra) inserted tets, -1 = removed
+  std::vector<std::int32_t> extra_next_;  // (n_extra) next in the leaf's list
+  std::vector<std::int32_t> where_;       // (n_tets) slot >= 0, extra e as -(e + 2), -1 = not indexed
+  std::size_t indexed_ = 0;
+  std::size_t edits_ = 0;  // removals and insertions since the last rebuild
+};
+
+}  // namespace mtcut::engine

@@ -1,0 +1,126 @@
+#include "engine/mt/mt.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "engine/mt/frontier.h"
+#include "engine/tet_geometry.h"
+
+namespace mtcut::engine {
+namespace {
+
+// A tet split at its centroid into four (the fine mesh), and one fragment
+// that collapses the centroid onto corner 0 (the big tet back).
+struct StarMt {
+  Mt mt;
+  TetId big;
+  FragId collapse;
+};
+
+TetMesh centroid_split() {
+  TetMesh mesh;
+  mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(0.25, 0.25, 0.25)};
+  const VertId c(4);
+  const Tet big = {VertId(0), VertId(1), VertId(2), VertId(3)};
+  for (int i = 0; i < 4; ++i) {
+    Tet t = big;
+    t[i] = c;
+    mesh.tets.push_back(t);
+  }
+  return mesh;
+}
+
+StarMt make_star_mt() {
+  StarMt s{Mt::from_fine_mesh(centroid_split()), TetId(), FragId()};
+  Mt& mt = s.mt;
+  s.collapse = mt.add_fragment();
+  for (std::size_t i = 0; i < 4; ++i) mt.set_death(TetId(i), s.collapse);
+  s.big = mt.add_tet({VertId(0), VertId(1), VertId(2), VertId(3)}, s.collapse, FragId(), 0xF);
+  const FragId drain = mt.add_fragment();
+  mt.set_drain(drain);
+  mt.set_death(s.big, drain);
+  return s;
+}
+
+TEST(Mt, FromFineMeshMarksTheSurface) {
+  const Mt mt = Mt::from_fine_mesh(centroid_split());
+  EXPECT_EQ(mt.num_fragments(), 1u);
+  EXPECT_EQ(mt.created(mt.root()).size(), 4u);
+  for (std::size_t t = 0; t < 4; ++t) {
+    // Only the face opposite the centroid (local index t) is on the surface.
+    EXPECT_EQ(mt.boundary_mask(TetId(t)), 1u << t);
+    EXPECT_FALSE(mt.death(TetId(t)).valid());
+  }
+  EXPECT_NEAR(mt.fine_volume(), 1.0 / 6.0, 1e-15);
+}
+
+TEST(Mt, HandBuiltMtIsValidWithDerivedArcs) {
+  const StarMt s = make_star_mt();
+  const ValidationReport report = s.mt.validate();
+  EXPECT_TRUE(report.ok()) << report.summary();
+  EXPECT_EQ(s.mt.parents(s.collapse), std::vector<FragId>{s.mt.root()});
+  EXPECT_EQ(s.mt.children(s.collapse), std::vector<FragId>{s.mt.drain()});
+  EXPECT_EQ(s.mt.children(s.mt.root()), std::vector<FragId>{s.collapse});
+  EXPECT_EQ(s.mt.topological_order(), (std::vector<FragId>{s.mt.root(), s.collapse, s.mt.drain()}));
+  EXPECT_FLOAT_EQ(s.mt.fragment_error(s.collapse), s.mt.error(s.big));
+  EXPECT_LE(s.mt.fragment_error(s.mt.root()), s.mt.error(s.big));
+  EXPECT_EQ(s.mt.num_live_tets(), 5u);
+}
+
+TEST(Mt, ListsFollowBirthDeathAndKill) {
+  StarMt s = make_star_mt();
+  Mt& mt = s.mt;
+  // Re-attach the big tet's death to a new fragment and back.
+  const FragId extra = mt.add_fragment();
+  mt.set_death(s.big, extra);
+  EXPECT_TRUE(mt.replaced(mt.drain()).empty());
+  EXPECT_EQ(mt.replaced(extra).size(), 1u);
+  mt.set_death(s.big, mt.drain());
+  EXPECT_TRUE(mt.replaced(extra).empty());
+  // Killing a tet in the middle of root's list keeps the other slots right.
+  mt.kill_tet(TetId(1));
+  EXPECT_FALSE(mt.alive(TetId(1)));
+  EXPECT_EQ(mt.num_live_tets(), 4u);
+  auto created = std::vector<TetId>(mt.created(mt.root()).begin(), mt.created(mt.root()).end());
+  std::sort(created.begin(), created.end());
+  EXPECT_EQ(created, (std::vector<TetId>{TetId(0), TetId(2), TetId(3)}));
+  mt.set_birth(TetId(3), extra);
+  EXPECT_EQ(mt.created(extra).size(), 1u);
+  EXPECT_EQ(mt.created(mt.root()).size(), 2u);
+}
+
+TEST(Mt, ValidateCatchesABrokenFragment) {
+  StarMt s = make_star_mt();
+  // A tet of the fine mesh now survives into the coarsest mesh: it overlaps
+  // the big tet there, and the fragment no longer fills what it replaces.
+  s.mt.set_death(TetId(2), s.mt.drain());
+  const ValidationReport report = s.mt.validate();
+  EXPECT_FALSE(report.ok());
+  EXPECT_NE(report.summary().find("fragment"), std::string::npos) << report.summary();
+}
+
+TEST(Mt, ValidateCatchesAMissingTet) {
+  StarMt s = make_star_mt();
+  s.mt.kill_tet(TetId(0));
+  EXPECT_FALSE(s.mt.validate().ok());
+}
+
+TEST(Mt, ValidateCatchesAWrongSurfaceMark) {
+  StarMt s = make_star_mt();
+  s.mt.set_boundary_mask(TetId(0), 0);  // its outer face is unmarked: looks like a hanging face
+  const ValidationReport report = s.mt.validate();
+  EXPECT_FALSE(report.ok());
+  EXPECT_NE(report.summary().find("hanging"), std::string::npos) << report.summary();
+}
+
+TEST(Mt, ValidateCatchesACycle) {
+  StarMt s = make_star_mt();
+  // The drain now also creates a tet that the collapse replaces.
+  const TetId t = s.mt.add_tet({VertId(0), VertId(1), VertId(2), VertId(4)}, s.mt.drain(), s.collapse, 0);
+  (void)t;
+  EXPECT_FALSE(s.mt.validate().ok());
+}
+
+}  // namespace
+}  // namespace mtcut::engine

@@ -1,0 +1,165 @@
+#include "engine/mt/selective_refinement.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "engine/mt/tet_bvh.h"
+#include "tests/engine/mt/mt_test_util.h"
+
+namespace mtcut::engine {
+namespace {
+
+using test::sorted_tets;
+using test::test_mesh;
+using test::test_mt;
+
+// The box around the MT's vertices.
+Aabb mt_box(const Mt& mt) {
+  Aabb box;
+  for (const Vec3& p : mt.positions()) box.extend(p);
+  return box;
+}
+
+// A field fine near the focus, growing outwards, scaled to the MT's errors.
+ErrorField field_for(const Mt& mt, const Vec3& focus) {
+  float fine = 0.0f;
+  for (TetId t : mt.created(mt.root())) fine = std::max(fine, mt.error(t));
+  const Aabb box = mt_box(mt);
+  ErrorField field;
+  field.focus = focus;
+  field.radius = 0.15 * (box.hi - box.lo).norm();
+  field.near_error = fine;
+  field.growth = 0.5;
+  return field;
+}
+
+struct SelectiveCase {
+  std::string mesh;
+  bool preserve;
+};
+
+class SelectiveRefinementOnMeshes : public ::testing::TestWithParam<SelectiveCase> {
+ protected:
+  const Mt& mt() const { return test_mt(GetParam().mesh, GetParam().preserve); }
+};
+
+TEST_P(SelectiveRefinementOnMeshes, UniformErrorZeroIsFineAndInfinityCoarsest) {
+  EXPECT_EQ(sorted_tets(extract_uniform(mt(), 0.0)), sorted_tets(Frontier::finest(mt())));
+  EXPECT_EQ(sorted_tets(extract_uniform(mt(), std::numeric_limits<double>::infinity())),
+            sorted_tets(Frontier::coarsest(mt())));
+}
+
+TEST_P(SelectiveRefinementOnMeshes, UniformLevelsCoarsenAsTheErrorGrows) {
+  float top = 0.0f;
+  for (std::size_t t = 0; t < mt().num_tets(); ++t) top = std::max(top, mt().error(TetId(t)));
+  std::size_t previous = std::numeric_limits<std::size_t>::max();
+  for (double e : {0.0, 0.1, 0.2, 0.4, 0.7, 1.0}) {
+    const Frontier frontier = extract_uniform(mt(), e * top);
+    const ValidationReport report = validate_frontier(mt(), frontier);
+    ASSERT_TRUE(report.ok()) << report.summary();
+    // Every tet not from the fine mesh meets the error.
+    for (TetId t : frontier.tets())
+      if (mt().birth(t) != mt().root()) {
+        EXPECT_LE(mt().error(t), e * top);
+      }
+    EXPECT_LE(frontier.tets().size(), previous);
+    previous = frontier.tets().size();
+  }
+}
+
+TEST_P(SelectiveRefinementOnMeshes, IncrementalUpdatesMatchExtractionFromScratch) {
+  const Aabb box = mt_box(mt());
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto random_point = [&] {
+    return Vec3(box.lo + (box.hi - box.lo).cwiseProduct(Vec3(unit(rng), unit(rng), unit(rng))));
+  };
+  SelectiveRefiner refiner;
+  Frontier frontier = Frontier::finest(mt());
+  Vec3 focus = random_point();
+  std::size_t incremental = 0;
+  for (int step = 0; step < 40; ++step) {
+    // A scalpel path: small steps, now and then a jump.
+    if (step % 13 == 12) {
+      focus = random_point();
+    } else {
+      focus += 0.03 * (box.hi - box.lo).norm() * Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5);
+    }
+    const ErrorField field = field_for(mt(), focus);
+    const SelectiveRefiner::Stats stats = refiner.update(mt(), field, frontier);
+    incremental += stats.incremental;
+    ASSERT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt(), field))) << "step " << step;
+    if (step % 4 == 0) {
+      const ValidationReport report = validate_frontier(mt(), frontier);
+      ASSERT_TRUE(report.ok()) << "step " << step << ": " << report.summary();
+    }
+  }
+  EXPECT_EQ(incremental, 39u);  // all but the first
+}
+
+TEST_P(SelectiveRefinementOnMeshes, NearTheFocusTheFrontierIsAsFineAsAsked) {
+  const Aabb box = mt_box(mt());
+  ErrorField field = field_for(mt(), box.center());
+  const Frontier frontier = extract_frontier(mt(), field);
+  for (TetId t : frontier.tets()) {
+    if (mt().birth(t) == mt().root()) continue;
+    const double d = tet_box(mt(), t).min_distance(field.focus);
+    EXPECT_LE(mt().error(t), field.threshold(d));
+  }
+  // And it is coarser than the fine mesh elsewhere.
+  EXPECT_LT(frontier.tets().size(), mt().created(mt().root()).size());
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, SelectiveRefinementOnMeshes,
+                         ::testing::Values(SelectiveCase{"liver", false}, SelectiveCase{"ellipsoid", true},
+                                           SelectiveCase{"box", true}, SelectiveCase{"armadillo", false}),
+                         [](const auto& case_info) {
+                           return case_info.param.mesh + (case_info.param.preserve ? "_preserved" : "_free");
+                         });
+
+TEST(SelectiveRefinement, SmallFocusMovesTouchOnlyNearbyFragments) {
+  const Mt& mt = test_mt("ellipsoid-3k", false);
+  const Aabb box = mt_box(mt);
+  const double size = (box.hi - box.lo).norm();
+  SelectiveRefiner refiner;
+  Frontier frontier = Frontier::finest(mt);
+  Vec3 focus = box.center() - 0.2 * (box.hi - box.lo);
+  refiner.update(mt, field_for(mt, focus), frontier);
+  std::size_t tested = 0, steps = 0;
+  for (; steps < 20; ++steps) {
+    focus += Vec3(0.004 * size, 0.002 * size, 0.0);
+    const SelectiveRefiner::Stats stats = refiner.update(mt, field_for(mt, focus), frontier);
+    EXPECT_TRUE(stats.incremental);
+    tested += stats.fragments_tested;
+  }
+  // On average a step looks at a small share of the fragments.
+  EXPECT_LT(static_cast<double>(tested) / static_cast<double>(steps), 0.1 * static_cast<double>(mt.num_fragments()))
+      << tested / steps << " of " << mt.num_fragments();
+  EXPECT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt, field_for(mt, focus))));
+}
+
+TEST(SelectiveRefinement, AFrontierEditedElsewhereGetsAFullPass) {
+  const Mt& mt = test_mt("box");
+  const Aabb box = mt_box(mt);
+  SelectiveRefiner refiner;
+  Frontier frontier = Frontier::finest(mt);
+  const ErrorField field = field_for(mt, box.lo);
+  EXPECT_FALSE(refiner.update(mt, field, frontier).incremental);
+  EXPECT_TRUE(refiner.update(mt, field, frontier).incremental);
+  // Someone refines by hand: the refiner must notice.
+  const auto refinable = frontier.refinable(mt);
+  ASSERT_FALSE(refinable.empty());
+  frontier.refine(mt, refinable.front());
+  const SelectiveRefiner::Stats stats = refiner.update(mt, field, frontier);
+  EXPECT_FALSE(stats.incremental);
+  EXPECT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt, field)));
+  // A different threshold shape too.
+  ErrorField other = field;
+  other.growth *= 2;
+  EXPECT_FALSE(refiner.update(mt, other, frontier).incremental);
+  EXPECT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt, other)));
+}
+
+}  // namespace
+}  // namespace mtcut::engine

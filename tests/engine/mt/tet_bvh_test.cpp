@@ -1,0 +1,140 @@
+#include "engine/mt/tet_bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "engine/mt/frontier.h"
+#include "engine/mt/selective_refinement.h"
+#include "tests/engine/mt/mt_test_util.h"
+
+namespace mtcut::engine {
+namespace {
+
+using test::test_mt;
+
+std::vector<TetId> brute_force_containing(const Mt& mt, const Vec3& p) {
+  std::vector<TetId> out;
+  for (std::size_t t = 0; t < mt.num_tets(); ++t)
+    if (mt.alive(TetId(t)) && tet_contains(mt, TetId(t), p)) out.emplace_back(t);
+  return out;
+}
+
+std::vector<TetId> bvh_containing(const Mt& mt, const TetBvh& bvh, const Vec3& p) {
+  std::vector<TetId> out;
+  bvh.for_each_containing(mt, p, [&](TetId t) {
+    out.push_back(t);
+    return true;
+  });
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<Vec3> random_points(const Mt& mt, int n, unsigned seed) {
+  Aabb box;
+  for (const Vec3& p : mt.positions()) box.extend(p);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-0.05, 1.05);
+  std::vector<Vec3> points;
+  for (int i = 0; i < n; ++i)
+    points.push_back(box.lo + (box.hi - box.lo).cwiseProduct(Vec3(unit(rng), unit(rng), unit(rng))));
+  // Vertices too: points on many tets at once.
+  for (std::size_t v = 0; v < mt.num_vertices(); v += 37) points.push_back(mt.position(VertId(v)));
+  return points;
+}
+
+TEST(TetBvh, FindsEveryTetHoldingAPointAtEveryResolution) {
+  for (const char* name : {"liver", "box"}) {
+    const Mt& mt = test_mt(name);
+    const TetBvh bvh(mt);
+    EXPECT_EQ(bvh.size(), mt.num_live_tets());
+    std::size_t inside = 0;
+    for (const Vec3& p : random_points(mt, 300, 1)) {
+      const auto expected = brute_force_containing(mt, p);
+      ASSERT_EQ(bvh_containing(mt, bvh, p), expected) << name;
+      inside += !expected.empty();
+      EXPECT_EQ(bvh.locate(mt, p).valid(), !expected.empty());
+    }
+    EXPECT_GT(inside, 50u);
+  }
+}
+
+TEST(TetBvh, LocatesInAFrontier) {
+  const Mt& mt = test_mt("ellipsoid");
+  const TetBvh bvh(mt);
+  Aabb box;
+  for (const Vec3& p : mt.positions()) box.extend(p);
+  ErrorField field;
+  field.focus = box.lo;
+  field.near_error = 0.0;
+  field.growth = 0.3;
+  const Frontier frontier = extract_frontier(mt, field);
+  for (const Vec3& p : random_points(mt, 300, 2)) {
+    const TetId found = bvh.locate_in(mt, frontier, p);
+    bool any = false;
+    for (TetId t : frontier.tets()) any = any || tet_contains(mt, t, p);
+    ASSERT_EQ(found.valid(), any);
+    if (found.valid()) {
+      EXPECT_TRUE(frontier.has_tet(found));
+      EXPECT_TRUE(tet_contains(mt, found, p));
+    }
+  }
+}
+
+// What the cutter will do: replace a tet by pieces with the same birth and
+// death (here: four tets around its centroid).
+std::vector<TetId> split_at_centroid(Mt& mt, TetId t) {
+  const Tet v = mt.tet(t);
+  const auto c = mt.corners(t);
+  const VertId m = mt.add_vertex((c[0] + c[1] + c[2] + c[3]) / 4.0);
+  const FragId birth = mt.birth(t), death = mt.death(t);
+  mt.kill_tet(t);
+  std::vector<TetId> pieces;
+  for (int i = 0; i < 4; ++i) {
+    Tet piece = v;
+    piece[i] = m;
+    pieces.push_back(mt.add_tet(piece, birth, death, 0));
+  }
+  return pieces;
+}
+
+TEST(TetBvh, FollowsReplacedTets) {
+  Mt mt = test_mt("box");  // a copy to edit
+  TetBvh bvh(mt);
+  std::mt19937 rng(9);
+  for (int round = 0; round < 3; ++round) {
+    // Few edits: applied in place; then many: a rebuild.
+    const int edits = round == 0 ? 10 : 400;
+    for (int k = 0; k < edits; ++k) {
+      TetId t(static_cast<std::size_t>(rng() % mt.num_tets()));
+      while (!mt.alive(t)) t = TetId(static_cast<std::size_t>(rng() % mt.num_tets()));
+      const auto pieces = split_at_centroid(mt, t);
+      bvh.replace(mt, t, pieces);
+    }
+    EXPECT_EQ(bvh.size(), mt.num_live_tets());
+    for (const Vec3& p : random_points(mt, 150, 3 + static_cast<unsigned>(round)))
+      ASSERT_EQ(bvh_containing(mt, bvh, p), brute_force_containing(mt, p));
+  }
+}
+
+TEST(TetBvh, OverlapQueryReturnsEveryCandidate) {
+  const Mt& mt = test_mt("liver");
+  const TetBvh bvh(mt);
+  Aabb query;
+  query.extend(mt.position(VertId(0)));
+  query.extend(mt.position(VertId(50)));
+  std::vector<TetId> found;
+  bvh.for_each_overlapping(mt, query, [&](TetId t) {
+    found.push_back(t);
+    return true;
+  });
+  std::sort(found.begin(), found.end());
+  std::vector<TetId> expected;
+  for (std::size_t t = 0; t < mt.num_tets(); ++t)
+    if (mt.alive(TetId(t)) && tet_box(mt, TetId(t)).overlaps(query)) expected.emplace_back(t);
+  EXPECT_EQ(found, expected);
+  EXPECT_FALSE(expected.empty());
+}
+
+}  // namespace
+}  // namespace mtcut::engine
