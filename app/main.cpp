@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "app/bench_command.h"
 #include "app/mesh_command.h"
 #include "engine/input_error.h"
 
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "mtcut 0.1.0");
 
   mtcut::app::register_mesh_command(app);
+  mtcut::app::register_bench_command(app);
 
   try {
     app.parse(argc, argv);

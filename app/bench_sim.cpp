@@ -1,0 +1,127 @@
+#include "app/bench_sim.h"
+
+#include <cmath>
+
+#include "app/bench_timer.h"
+#include "engine/mesh_loader.h"
+#include "sim/fixed_region.h"
+#include "sim/forces.h"
+#include "sim/stepper.h"
+
+namespace mtcut::app {
+namespace {
+
+using sim::Vec3;
+
+// The ceiling: the plainest spring loop, struct of arrays, no damping terms
+// beyond air drag, no guard, no contacts. Same springs, same masses.
+struct ReferenceLoop {
+  std::vector<double> x, y, z, vx, vy, vz, fx, fy, fz, inv_mass;  // (n_particles)
+  std::vector<std::int32_t> a, b;                                  // (n_springs)
+  std::vector<double> k, rest;                                     // (n_springs)
+
+  explicit ReferenceLoop(const sim::SpringModel& m) {
+    const std::size_t n = m.num_particles();
+    for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &fx, &fy, &fz}) v->assign(n, 0.0);
+    inv_mass = m.inv_mass;
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] = m.rest_position[i].x();
+      y[i] = m.rest_position[i].y();
+      z[i] = m.rest_position[i].z();
+    }
+    a = m.spring_a;
+    b = m.spring_b;
+    k = m.stiffness;
+    rest = m.rest_length;
+  }
+
+  void step(double h, double gz) {
+    const std::size_t n = x.size(), m = a.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      fx[i] = 0;
+      fy[i] = 0;
+      fz[i] = inv_mass[i] > 0 ? gz / inv_mass[i] : 0.0;
+    }
+    for (std::size_t s = 0; s < m; ++s) {
+      const auto i = a[s], j = b[s];
+      const double dx = x[j] - x[i], dy = y[j] - y[i], dz = z[j] - z[i];
+      const double len = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const double f = k[s] * (len - rest[s]) / len;
+      fx[i] += f * dx, fy[i] += f * dy, fz[i] += f * dz;
+      fx[j] -= f * dx, fy[j] -= f * dy, fz[j] -= f * dz;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      vx[i] += h * inv_mass[i] * fx[i];
+      vy[i] += h * inv_mass[i] * fy[i];
+      vz[i] += h * inv_mass[i] * fz[i];
+      x[i] += h * vx[i];
+      y[i] += h * vy[i];
+      z[i] += h * vz[i];
+    }
+  }
+};
+
+nlohmann::ordered_json rates(const BatchTiming& t, int steps, std::size_t springs) {
+  const double per_step = t.median_seconds / steps;
+  return {{"steps_per_s", 1.0 / per_step},
+          {"ns_per_spring", 1e9 * per_step / static_cast<double>(springs)},
+          {"spring_steps_per_s", static_cast<double>(springs) / per_step}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json run_sim_bench(const SimBenchDef& def) {
+  engine::MeshLoadDef load;
+  load.builtin_tets = def.tets;
+  load.builtin_size = Vec3(0.2, 0.1, 0.1);
+  const engine::TetMesh mesh = engine::load_mesh("builtin:box", load).mesh;
+  sim::FixedRegion fixed;
+  fixed.kind = sim::FixedRegion::Kind::kHalfSpace;
+  fixed.normal = Vec3(-1, 0, 0);
+  fixed.offset = -(0.1 - 1e-9);  // the face x = +0.1
+  sim::MaterialDef material;     // liver-like defaults
+  const sim::SpringModel model = sim::build_spring_model(
+      mesh.tets, mesh.positions, material, [&](engine::VertId v) { return fixed.contains(v, mesh.position(v)); });
+  sim::Environment env;
+
+  nlohmann::ordered_json out;
+  out["mesh"] = {{"vertices", model.num_particles()}, {"springs", model.num_springs()}, {"tets", mesh.num_tets()}};
+  const double h_explicit = 0.5 * sim::critical_time_step(model);
+  out["explicit_dt"] = h_explicit;
+
+  ReferenceLoop reference(model);
+  const BatchTiming ref = time_batches(def.runs, [&] {
+    for (int s = 0; s < def.steps; ++s) reference.step(h_explicit, env.gravity.z());
+  });
+  out["reference_loop"] = rates(ref, def.steps, model.num_springs());
+
+  sim::Stepper stepper;
+  sim::SpringState state = sim::rest_state(model);
+  sim::IntegratorDef explicit_def;
+  explicit_def.kind = sim::IntegratorKind::kSymplecticEuler;
+  const BatchTiming expl = time_batches(def.runs, [&] {
+    for (int s = 0; s < def.steps; ++s) stepper.step(model, env, explicit_def, state, h_explicit);
+  });
+  out["symplectic_euler"] = rates(expl, def.steps, model.num_springs());
+  out["symplectic_euler"]["vs_reference"] = ref.median_seconds / expl.median_seconds;
+
+  state = sim::rest_state(model);
+  sim::Stepper implicit_stepper;
+  sim::IntegratorDef implicit_def;  // implicit Euler, defaults
+  long cg_iterations = 0, frames = 0;
+  const BatchTiming impl = time_batches(def.runs, [&] {
+    for (int s = 0; s < def.frames; ++s) {
+      cg_iterations += implicit_stepper.step(model, env, implicit_def, state, 1.0 / 60.0).cg_iterations;
+      ++frames;
+    }
+  });
+  out["implicit_euler"] = rates(impl, def.frames, model.num_springs());
+  out["implicit_euler"]["ms_per_frame_60hz"] = 1e3 * impl.median_seconds / def.frames;
+  out["implicit_euler"]["mean_cg_iterations"] = static_cast<double>(cg_iterations) / static_cast<double>(frames);
+  out["implicit_euler"]["cg_tolerance"] = implicit_def.cg_tolerance;
+  out["refused_steps"] = stepper.refused_steps() + implicit_stepper.refused_steps();
+  out["runs"] = def.runs;
+  return out;
+}
+
+}  // namespace mtcut::app

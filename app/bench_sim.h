@@ -1,0 +1,19 @@
+#pragma once
+// `mtcut bench sim`: the spring step on a builtin box of ~10k vertices /
+// ~60k springs, gravity, one face fixed; each integrator and a plain SoA
+// reference loop (the ceiling) measured in the same run.
+
+#include <nlohmann/json.hpp>
+
+namespace mtcut::app {
+
+struct SimBenchDef {
+  int tets = 50000;   // builtin box target (~10k vertices, ~60k springs)
+  int runs = 5;       // timed batches (median reported)
+  int steps = 200;    // explicit steps per batch
+  int frames = 30;    // implicit 1/60 s frames per batch
+};
+
+nlohmann::ordered_json run_sim_bench(const SimBenchDef& def);
+
+}  // namespace mtcut::app
