@@ -24,7 +24,7 @@ double Aabb::max_distance(const Vec3& p) const {
   return std::sqrt(sum);
 }
 
-void Bvh::build(std::span<const Aabb> boxes, int leaf_size) {
+void Bvh::build(std::span<const Aabb> boxes, std::span<const std::int32_t> levels, int leaf_size) {
   nodes_.clear();
   items_.resize(boxes.size());
   std::iota(items_.begin(), items_.end(), 0);
@@ -55,6 +55,28 @@ void Bvh::build(std::span<const Aabb> boxes, int leaf_size) {
       node.first = job.begin;
       node.count = count;
       continue;
+    }
+    const auto first = items_.begin() + job.begin, last = items_.begin() + job.end;
+    if (!levels.empty()) {
+      const auto [lo, hi] = std::minmax_element(first, last, [&](std::int32_t a, std::int32_t b) {
+        return levels[static_cast<std::size_t>(a)] < levels[static_cast<std::size_t>(b)];
+      });
+      const std::int32_t lo_level = levels[static_cast<std::size_t>(*lo)];
+      const std::int32_t hi_level = levels[static_cast<std::size_t>(*hi)];
+      if (lo_level != hi_level) {
+        const std::int32_t pivot = lo_level + (hi_level - lo_level) / 2;  // both sides non-empty
+        const auto mid = std::stable_partition(
+            first, last, [&](std::int32_t a) { return levels[static_cast<std::size_t>(a)] <= pivot; });
+        const auto split = static_cast<std::int32_t>(mid - items_.begin());
+        const auto left = static_cast<std::int32_t>(nodes_.size());
+        node.first = left;
+        node.count = 0;
+        nodes_.emplace_back();
+        nodes_.emplace_back();
+        jobs.push_back({left, job.begin, split});
+        jobs.push_back({left + 1, split, job.end});
+        continue;
+      }
     }
     int axis = 0;
     const Vec3 extent = centres.hi - centres.lo;

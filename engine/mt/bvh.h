@@ -9,6 +9,7 @@
 // an internal node are consecutive), items a permutation array; the users
 // keep their per-node data (error bounds, overflow lists) in parallel arrays.
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -37,6 +38,9 @@ struct Aabb {
   double max_distance(const Vec3& p) const;
 };
 
+// floor(log2(size)) for the `levels` of Bvh::build (a very low level for 0).
+inline std::int32_t error_level(float size) { return size > 0.0f ? std::ilogb(size) : -1000; }
+
 struct BvhNode {
   Aabb box;
   std::int32_t first = 0;  // leaf: first item; internal: left child (right = first + 1)
@@ -46,9 +50,15 @@ struct BvhNode {
 
 class Bvh {
  public:
-  // Builds over items 0..boxes.size()-1 by median splits along the longest
-  // axis of the boxes' centres; leaves hold at most leaf_size items.
-  void build(std::span<const Aabb> boxes, int leaf_size = 4);
+  // Builds over items 0..boxes.size()-1; leaves hold at most leaf_size
+  // items. With `levels` (one small integer per item, e.g. log2 of its
+  // size), the top of the tree separates the levels first (splitting at the
+  // middle level of a range), and median splits along the longest axis of
+  // the boxes' centres follow within one level. An MT holds every
+  // resolution at once; mixing a coarse tet into a node of fine ones would
+  // make the node as big as the coarse tet, and a point query would visit
+  // every level's worth of nodes at every depth.
+  void build(std::span<const Aabb> boxes, std::span<const std::int32_t> levels = {}, int leaf_size = 4);
 
   bool empty() const { return nodes_.empty(); }
   std::span<const BvhNode> nodes() const { return nodes_; }

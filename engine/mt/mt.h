@@ -77,7 +77,10 @@ class Mt {
   // Moves t to another creating / replacing fragment (re-attaching an arc).
   void set_birth(TetId t, FragId f);
   void set_death(TetId t, FragId f);
-  void set_boundary_mask(TetId t, FaceMask mask) { tet_boundary_[t.index()] = mask; }
+  void set_boundary_mask(TetId t, FaceMask mask) {
+    tet_boundary_[t.index()] = mask;
+    ++revision_;
+  }
 
   // --- fragments
   std::size_t num_fragments() const { return frag_created_.size(); }

@@ -77,7 +77,9 @@ void SelectiveRefiner::rebuild_index(const Mt& mt) {
     worst_box_.push_back(tet_box(mt, worst));
     frag_error_.push_back(mt.error(worst));
   }
-  bvh_.build(frag_box_, 2);
+  std::vector<std::int32_t> levels(frag_error_.size());
+  for (std::size_t i = 0; i < levels.size(); ++i) levels[i] = error_level(frag_error_[i]);
+  bvh_.build(frag_box_, levels, 2);
   // Error bounds bottom-up: children always follow their parent in the array.
   const auto nodes = bvh_.nodes();
   node_min_.assign(nodes.size(), 0.0f);

@@ -18,17 +18,25 @@ bool tet_contains(const Mt& mt, TetId t, const Vec3& p) {
          orient3d_sign(c[0], c[1], p, c[3]) >= 0 && orient3d_sign(c[0], c[1], c[2], p) >= 0;
 }
 
+TetId locate_among(const Mt& mt, std::span<const TetId> tets, const Vec3& p) {
+  for (TetId t : tets)
+    if (tet_contains(mt, t, p)) return t;
+  return TetId();
+}
+
 void TetBvh::rebuild(const Mt& mt) {
   std::vector<Aabb> boxes;
-  std::vector<std::int32_t> ids;
+  std::vector<std::int32_t> ids, levels;
   boxes.reserve(mt.num_live_tets());
   ids.reserve(mt.num_live_tets());
+  levels.reserve(mt.num_live_tets());
   for (std::size_t i = 0; i < mt.num_tets(); ++i) {
     if (!mt.alive(TetId(i))) continue;
     boxes.push_back(tet_box(mt, TetId(i)));
     ids.push_back(static_cast<std::int32_t>(i));
+    levels.push_back(error_level(mt.error(TetId(i))));
   }
-  bvh_.build(boxes);
+  bvh_.build(boxes, levels);
   const auto items = bvh_.items();
   slot_tet_.resize(items.size());
   where_.assign(mt.num_tets(), -1);

@@ -27,6 +27,10 @@ class Frontier;
 Aabb tet_box(const Mt& mt, TetId t);
 // p lies in the closed tet t (exact orientation tests).
 bool tet_contains(const Mt& mt, TetId t, const Vec3& p);
+// The first of `tets` holding p (none if none). For small local searches:
+// a vertex that a refinement brings back lies in the tets the refined
+// fragment created, so its deformed position is found among those.
+TetId locate_among(const Mt& mt, std::span<const TetId> tets, const Vec3& p);
 
 class TetBvh {
  public:

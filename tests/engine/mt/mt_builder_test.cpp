@@ -136,8 +136,8 @@ TEST(MtBuilder, DepthGrowsLikeLogN) {
   // Eight times the tets: a linear depth would grow 8x, a logarithmic one
   // by a constant (measured ~1.3x).
   MeshLoadDef small, large;
-  small.builtin_tets = 1000;
-  large.builtin_tets = 8000;
+  small.builtin_tets = 600;
+  large.builtin_tets = 4800;
   const Mt a = build_mt(load_mesh("builtin:box", small).mesh, {});
   const Mt b = build_mt(load_mesh("builtin:box", large).mesh, {});
   const MtStats sa = compute_mt_stats(a), sb = compute_mt_stats(b);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <set>
 
 #include "engine/mt/frontier.h"
 #include "engine/mt/selective_refinement.h"
@@ -79,6 +80,25 @@ TEST(TetBvh, LocatesInAFrontier) {
       EXPECT_TRUE(tet_contains(mt, found, p));
     }
   }
+}
+
+TEST(TetBvh, ARefinedVertexLiesInTheTetsItsFragmentCreated) {
+  const Mt& mt = test_mt("ellipsoid");
+  for (std::size_t i = 0; i < mt.num_fragments(); ++i) {
+    const FragId f(i);
+    if (f == mt.root() || f == mt.drain()) continue;
+    // The vertex the collapse removed: in replaced(f), not in created(f).
+    std::set<VertId> before, after;
+    for (TetId t : mt.replaced(f)) before.insert(mt.tet(t).begin(), mt.tet(t).end());
+    for (TetId t : mt.created(f)) after.insert(mt.tet(t).begin(), mt.tet(t).end());
+    for (VertId v : before)
+      if (!after.count(v)) {
+        const TetId t = locate_among(mt, mt.created(f), mt.position(v));
+        ASSERT_TRUE(t.valid()) << "fragment " << i;
+        EXPECT_TRUE(tet_contains(mt, t, mt.position(v)));
+      }
+  }
+  EXPECT_FALSE(locate_among(mt, mt.created(mt.root()), Vec3(10, 10, 10)).valid());
 }
 
 // What the cutter will do: replace a tet by pieces with the same birth and
