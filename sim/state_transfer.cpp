@@ -1,0 +1,136 @@
+#include "sim/state_transfer.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "engine/tet_geometry.h"
+
+namespace mtcut::sim {
+namespace {
+
+using engine::TetId;
+
+// Barycentric coordinates of p in the tet with corners c (rest space).
+std::array<double, 4> barycentric(const std::array<Vec3, 4>& c, const Vec3& p) {
+  const double total = engine::signed_volume(c[0], c[1], c[2], c[3]);
+  std::array<double, 4> w{};
+  w[0] = engine::signed_volume(p, c[1], c[2], c[3]) / total;
+  w[1] = engine::signed_volume(c[0], p, c[2], c[3]) / total;
+  w[2] = engine::signed_volume(c[0], c[1], p, c[3]) / total;
+  w[3] = 1.0 - w[0] - w[1] - w[2];
+  return w;
+}
+
+enum class Source { kKept, kInterpolated, kEdge, kExtrapolated };
+
+std::pair<Vec3, Vec3> sample(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snap,
+                             VertId v, const EdgeOriginLookup& origins, Source& source, int depth) {
+  if (v.index() < snap.particle_of.size() && snap.particle_of[v.index()] >= 0) {
+    source = Source::kKept;
+    const auto p = static_cast<std::size_t>(snap.particle_of[v.index()]);
+    return {snap.x[p], snap.v[p]};
+  }
+  if (origins && depth < 64) {
+    if (const auto origin = origins(v)) {
+      Source ignored;
+      const auto [xa, va] = sample(mt, bvh, snap, origin->a, origins, ignored, depth + 1);
+      const auto [xb, vb] = sample(mt, bvh, snap, origin->b, origins, ignored, depth + 1);
+      source = Source::kEdge;
+      return {(1 - origin->s) * xa + origin->s * xb, (1 - origin->s) * va + origin->s * vb};
+    }
+  }
+  const Vec3& rest = mt.position(v);
+  TetId holder;
+  bvh.for_each_containing(mt, rest, [&](TetId t) {
+    if (!snap.simulated(t)) return true;
+    holder = t;
+    return false;
+  });
+  if (holder.valid()) {
+    source = Source::kInterpolated;
+    const auto w = barycentric(mt.corners(holder), rest);
+    Vec3 x = Vec3::Zero(), vel = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) {
+      const auto p = static_cast<std::size_t>(snap.particle_of[mt.tet(holder)[k].index()]);
+      x += w[k] * snap.x[p];
+      vel += w[k] * snap.v[p];
+    }
+    return {x, vel};
+  }
+  // Outside the simulated mesh: follow the nearest simulated vertex rigidly.
+  source = Source::kExtrapolated;
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t nearest = 0;
+  VertId nearest_vertex;
+  for (std::size_t u = 0; u < snap.particle_of.size(); ++u) {
+    if (snap.particle_of[u] < 0) continue;
+    const double d = (mt.position(VertId(u)) - rest).squaredNorm();
+    if (d < best) {
+      best = d;
+      nearest = static_cast<std::size_t>(snap.particle_of[u]);
+      nearest_vertex = VertId(u);
+    }
+  }
+  if (!nearest_vertex.valid()) return {rest, Vec3::Zero()};
+  return {snap.x[nearest] + (rest - mt.position(nearest_vertex)), snap.v[nearest]};
+}
+
+}  // namespace
+
+bool DeformationSnapshot::simulated(engine::TetId t) const { return std::binary_search(tets.begin(), tets.end(), t); }
+
+DeformationSnapshot take_snapshot(const engine::Mt& mt, const engine::Frontier& frontier, const SpringModel& model,
+                                  const SpringState& state) {
+  DeformationSnapshot snap;
+  snap.tets.assign(frontier.tets().begin(), frontier.tets().end());
+  std::sort(snap.tets.begin(), snap.tets.end());
+  snap.particle_of.assign(mt.num_vertices(), -1);
+  for (std::size_t p = 0; p < model.num_particles(); ++p)
+    snap.particle_of[model.particle_vertex[p].index()] = static_cast<std::int32_t>(p);
+  snap.x = state.x;
+  snap.v = state.v;
+  for (std::size_t p = 0; p < model.num_particles(); ++p) snap.momentum += model.mass[p] * state.v[p];
+  return snap;
+}
+
+std::pair<Vec3, Vec3> sample_vertex(const engine::Mt& mt, const engine::TetBvh& bvh,
+                                    const DeformationSnapshot& snapshot, VertId v, const EdgeOriginLookup& origins) {
+  Source ignored;
+  return sample(mt, bvh, snapshot, v, origins, ignored, 0);
+}
+
+SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
+                           const SpringModel& model, const EdgeOriginLookup& origins, TransferReport* report) {
+  TransferReport local;
+  SpringState state;
+  const std::size_t n = model.num_particles();
+  state.x.resize(n);
+  state.v.resize(n);
+  Vec3 momentum = Vec3::Zero();
+  double free_mass = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    Source source;
+    std::tie(state.x[p], state.v[p]) = sample(mt, bvh, snapshot, model.particle_vertex[p], origins, source, 0);
+    switch (source) {
+      case Source::kKept: ++local.kept; break;
+      case Source::kInterpolated: ++local.interpolated; break;
+      case Source::kEdge: ++local.from_edges; break;
+      case Source::kExtrapolated: ++local.extrapolated; break;
+    }
+    if (model.inv_mass[p] == 0) {
+      state.v[p].setZero();
+    } else {
+      free_mass += model.mass[p];
+    }
+    momentum += model.mass[p] * state.v[p];
+  }
+  if (free_mass > 0) {
+    local.momentum_correction = (snapshot.momentum - momentum) / free_mass;
+    for (std::size_t p = 0; p < n; ++p)
+      if (model.inv_mass[p] != 0) state.v[p] += local.momentum_correction;
+  }
+  if (report) *report = local;
+  return state;
+}
+
+}  // namespace mtcut::sim

@@ -1,0 +1,77 @@
+#pragma once
+// Carrying the simulated state across a change of the simulated mesh: a
+// refine or coarsen step of the frontier, or a cut that makes vertices.
+//
+// Why this shape. Before the change, the World takes a DeformationSnapshot:
+// the tets that were simulated and each MT vertex's particle state. After
+// it, every particle of the new model gets its position and velocity from
+// the snapshot:
+//  - a vertex that was simulated keeps its own state;
+//  - a vertex made by a cut lies on a parent edge at parameter s: it gets
+//    (1 - s) * state(a) + s * state(b) (a and b sampled recursively);
+//  - any other vertex (one that a refinement brings back, or a hidden one)
+//    gets the barycentric interpolation, in rest space, of the corners of the
+//    old simulated tet that contains its rest position (TetBvh over all MT
+//    tets, filtered by the snapshot's tets).
+// Affine deformations are therefore carried exactly. Masses come from the
+// new model (volumes x density, so the total is exact), and a uniform
+// velocity correction of the free particles makes the linear momentum after
+// the change equal to the momentum before it, to round-off.
+
+#include <functional>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "engine/mt/frontier.h"
+#include "engine/mt/mt.h"
+#include "engine/mt/tet_bvh.h"
+#include "sim/spring_model.h"
+#include "sim/spring_state.h"
+
+namespace mtcut::sim {
+
+// Where a cut vertex came from: rest position = (1 - s) * rest(a) + s * rest(b).
+struct EdgeOrigin {
+  VertId a, b;
+  double s = 0;
+};
+// Looks up the origin of a vertex made by a cut (nullopt for any other vertex).
+using EdgeOriginLookup = std::function<std::optional<EdgeOrigin>(VertId)>;
+
+struct DeformationSnapshot {
+  std::vector<engine::TetId> tets;        // simulated tets, sorted
+  std::vector<std::int32_t> particle_of;  // (n_mt_vertices) particle index, -1 if not simulated
+  std::vector<Vec3> x, v;                 // (n_particles) state of the old model
+  Vec3 momentum = Vec3::Zero();           // sum m v before the change
+
+  bool simulated(engine::TetId t) const;
+};
+
+// What the simulator holds now, taken before the MT or the frontier changes.
+DeformationSnapshot take_snapshot(const engine::Mt& mt, const engine::Frontier& frontier, const SpringModel& model,
+                                  const SpringState& state);
+
+// Deformed position and velocity of any MT vertex under the snapshot. `bvh`
+// indexes the MT's live tets, which must still include the snapshot's tets
+// (true across a frontier change; across a cut, new vertices come through
+// `origins`). A vertex outside every snapshot tet (the builder may move the
+// boundary) follows the nearest simulated particle rigidly.
+std::pair<Vec3, Vec3> sample_vertex(const engine::Mt& mt, const engine::TetBvh& bvh,
+                                    const DeformationSnapshot& snapshot, VertId v,
+                                    const EdgeOriginLookup& origins = {});
+
+struct TransferReport {
+  std::size_t kept = 0;          // particles that existed before
+  std::size_t interpolated = 0;  // new particles inside an old tet
+  std::size_t from_edges = 0;    // new particles made by a cut
+  std::size_t extrapolated = 0;  // new particles outside every old tet
+  Vec3 momentum_correction = Vec3::Zero();  // the uniform dv applied
+};
+
+// The state of `model` (the new one) from the snapshot.
+SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
+                           const SpringModel& model, const EdgeOriginLookup& origins = {},
+                           TransferReport* report = nullptr);
+
+}  // namespace mtcut::sim

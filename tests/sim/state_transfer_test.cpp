@@ -1,0 +1,139 @@
+#include "sim/state_transfer.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "engine/mesh_loader.h"
+#include "engine/mt/mt_builder.h"
+#include "sim/fixed_region.h"
+#include "sim/forces.h"
+#include "tests/test_paths.h"
+
+namespace mtcut::sim {
+namespace {
+
+using engine::Frontier;
+using engine::Mt;
+
+// An affine deformation and an affine velocity field of the rest shape:
+// interpolation must carry both exactly.
+struct AffineField {
+  Eigen::Matrix3d a;
+  Vec3 b;
+  Eigen::Matrix3d va;
+  Vec3 vb;
+  Vec3 x(const Vec3& rest) const { return a * rest + b; }
+  Vec3 v(const Vec3& rest) const { return va * rest + vb; }
+};
+
+SpringState state_from(const SpringModel& model, const AffineField& field) {
+  SpringState s;
+  for (const auto& p : model.rest_position) {
+    s.x.push_back(field.x(p));
+    s.v.push_back(field.v(p));
+  }
+  for (std::size_t i = 0; i < model.num_particles(); ++i)
+    if (model.inv_mass[i] == 0) s.v[i].setZero();
+  return s;
+}
+
+SpringModel model_of(const Mt& mt, const Frontier& frontier, const MaterialDef& material, const FixedRegion& fixed) {
+  std::vector<engine::Tet> tets;
+  for (const auto t : frontier.tets()) tets.push_back(mt.tet(t));
+  return build_spring_model(tets, mt.positions(), material,
+                            [&](VertId v) { return fixed.contains(v, mt.position(v)); });
+}
+
+class TransferOnMeshes : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(TransferOnMeshes, RandomLodStepsConserveMassAndMomentumAndCarryAffineFieldsExactly) {
+  engine::MeshLoadDef load;
+  load.builtin_tets = 3000;
+  const engine::TetMesh fine = engine::load_mesh(GetParam(), load).mesh;
+  const Mt mt = engine::build_mt(fine);
+  const engine::TetBvh bvh(mt);
+  MaterialDef material;
+  FixedRegion fixed;  // a few pinned vertices: they carry no momentum
+  fixed.kind = FixedRegion::Kind::kHalfSpace;
+  fixed.normal = Vec3(1, 0, 0);
+  fixed.offset = fine.positions[0].x();
+  for (const auto& p : fine.positions) fixed.offset = std::min(fixed.offset, p.x());
+  fixed.offset += 1e-9;
+
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  AffineField field;
+  field.a = Eigen::Matrix3d::Identity();
+  for (int i = 0; i < 9; ++i) field.a(i / 3, i % 3) += u(rng);
+  field.b = Vec3(u(rng), u(rng), u(rng));
+  // A rigid velocity field (translation + rotation) keeps the momentum test
+  // meaningful: a velocity field that is affine but not rigid is carried
+  // exactly too, and then the correction must stay at round-off.
+  field.va = Eigen::Matrix3d::Zero();
+  field.va(0, 1) = 0.5, field.va(1, 0) = -0.5;
+  field.vb = Vec3(0.1, -0.2, 0.3);
+
+  Frontier frontier = Frontier::finest(mt);
+  SpringModel model = model_of(mt, frontier, material, fixed);
+  SpringState state = state_from(model, field);
+  const double density_volume = material.density * fine.total_volume();
+  int interpolated = 0;
+  for (int step = 0; step < 60; ++step) {
+    const DeformationSnapshot snap = take_snapshot(mt, frontier, model, state);
+    // A random batch of refine / coarsen operations.
+    for (int k = 0; k < 8; ++k) {
+      const bool coarsen = rng() % 3 != 0;
+      const auto options = coarsen ? frontier.coarsenable(mt) : frontier.refinable(mt);
+      if (options.empty()) continue;
+      const auto f = options[rng() % options.size()];
+      coarsen ? frontier.coarsen(mt, f) : frontier.refine(mt, f);
+    }
+    ASSERT_TRUE(engine::validate_frontier(mt, frontier).ok());
+    model = model_of(mt, frontier, material, fixed);
+    ASSERT_TRUE(model.validate().ok()) << model.validate().summary();
+    TransferReport report;
+    state = transfer_state(mt, bvh, snap, model, {}, &report);
+    interpolated += static_cast<int>(report.interpolated);
+
+    EXPECT_NEAR(model.total_mass, density_volume, 1e-12 * density_volume) << "step " << step;
+    const Vec3 momentum = linear_momentum(model, state);
+    EXPECT_LT((momentum - snap.momentum).norm(), 1e-9 * std::max(1e-12, snap.momentum.norm())) << "step " << step;
+    for (std::size_t p = 0; p < model.num_particles(); ++p) {
+      const Vec3& rest = model.rest_position[p];
+      ASSERT_LT((state.x[p] - field.x(rest)).norm(), 1e-9) << "step " << step << " particle " << p;
+    }
+    EXPECT_EQ(report.extrapolated, 0u);
+  }
+  EXPECT_GT(interpolated, 0);  // refinements did bring vertices back
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, TransferOnMeshes,
+                         ::testing::Values(std::string("builtin:ellipsoid"), test::shared_mesh("liver.msh")));
+
+TEST(StateTransfer, CutVerticesComeFromTheirParentEdge) {
+  engine::MeshLoadDef load;
+  load.builtin_tets = 300;
+  const engine::TetMesh fine = engine::load_mesh("builtin:box", load).mesh;
+  Mt mt = engine::build_mt(fine);
+  const Frontier frontier = Frontier::finest(mt);
+  const SpringModel model = model_of(mt, frontier, {}, {});
+  SpringState state = rest_state(model);
+  for (std::size_t p = 0; p < state.x.size(); ++p) state.x[p] += Vec3(0, 0, 0.1 * static_cast<double>(p));
+  const DeformationSnapshot snap = take_snapshot(mt, frontier, model, state);
+  const engine::TetBvh bvh(mt);
+  const VertId a = mt.tet(frontier.tets()[0])[0], b = mt.tet(frontier.tets()[0])[1];
+  const VertId made = mt.add_vertex(0.75 * mt.position(a) + 0.25 * mt.position(b));
+  const EdgeOriginLookup origins = [&](VertId v) -> std::optional<EdgeOrigin> {
+    if (v == made) return EdgeOrigin{a, b, 0.25};
+    return std::nullopt;
+  };
+  const auto [x, v] = sample_vertex(mt, bvh, snap, made, origins);
+  const Vec3 xa = state.x[static_cast<std::size_t>(snap.particle_of[a.index()])];
+  const Vec3 xb = state.x[static_cast<std::size_t>(snap.particle_of[b.index()])];
+  EXPECT_LT((x - (0.75 * xa + 0.25 * xb)).norm(), 1e-15);
+  EXPECT_EQ(v, Vec3::Zero());
+}
+
+}  // namespace
+}  // namespace mtcut::sim
