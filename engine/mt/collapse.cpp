@@ -70,10 +70,8 @@ void SimplificationMesh::describe_star(VertId v, StarInfo& info) {
   info.surface.clear();
   info.num_planes = 0;
   info.corner = false;
-  info.worst_quality = 1.0;
+  info.worst_quality = -1.0;  // not computed yet: only needed when a new tet is poor
   for (TetId t : star(v)) {
-    const auto c = mt_.corners(t);
-    info.worst_quality = std::min(info.worst_quality, tet_quality(c[0], c[1], c[2], c[3]));
     const FaceMask mask = mt_.boundary_mask(t);
     const int iv = local_index(mt_.tet(t), v);
     for (int f = 0; f < 4; ++f)
@@ -96,7 +94,18 @@ void SimplificationMesh::describe_star(VertId v, StarInfo& info) {
   }
 }
 
-float SimplificationMesh::cost_of(VertId v, VertId w, const StarInfo& info, float bound) {
+double SimplificationMesh::worst_quality(VertId v, StarInfo& info) const {
+  if (info.worst_quality < 0.0) {
+    info.worst_quality = 1.0;
+    for (TetId t : star(v)) {
+      const auto c = mt_.corners(t);
+      info.worst_quality = std::min(info.worst_quality, tet_quality(c[0], c[1], c[2], c[3]));
+    }
+  }
+  return info.worst_quality;
+}
+
+float SimplificationMesh::cost_of(VertId v, VertId w, StarInfo& info, float bound) {
   constexpr float kInvalid = std::numeric_limits<float>::infinity();
   const bool surface_move = !info.surface.empty();
   if (surface_move) {
@@ -113,7 +122,6 @@ float SimplificationMesh::cost_of(VertId v, VertId w, const StarInfo& info, floa
         }
     }
   }
-  const double quality_floor = std::min(options_.min_quality, info.worst_quality);
   // Pass 1: the new tets, their validity and longest edges.
   made_.clear();
   double longest_max = 0.0;
@@ -141,7 +149,8 @@ float SimplificationMesh::cost_of(VertId v, VertId w, const StarInfo& info, floa
                                       (b - c).squaredNorm(), (b - d).squaredNorm(), (c - d).squaredNorm()});
     const double longest = std::sqrt(longest2);
     // tet_quality, sharing the longest edge.
-    if (std::numbers::sqrt2 * (b - a).cross(c - a).dot(d - a) / (longest2 * longest) < quality_floor) {
+    const double quality = std::numbers::sqrt2 * (b - a).cross(c - a).dot(d - a) / (longest2 * longest);
+    if (quality < options_.min_quality && quality < worst_quality(v, info)) {
       ++rejections_.quality;
       return kInvalid;
     }

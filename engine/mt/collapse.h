@@ -88,10 +88,11 @@ class SimplificationMesh {
     std::array<std::array<Vec3, 3>, 2> planes;   // distinct planes of those faces
     int num_planes = 0;
     bool corner = false;       // three or more planes: v may not move (preserve_boundary)
-    double worst_quality = 1;  // of the star's tets
+    double worst_quality = -1;  // of the star's tets; < 0 until worst_quality() computes it
   };
   void describe_star(VertId v, StarInfo& info);
-  float cost_of(VertId v, VertId target, const StarInfo& info, float bound);
+  float cost_of(VertId v, VertId target, StarInfo& info, float bound);
+  double worst_quality(VertId v, StarInfo& info) const;
   // How far v lies from the surface that replaces the one around it (+inf
   // when no surface face survives the collapse).
   double surface_distance(VertId v, VertId w, const StarInfo& info) const;

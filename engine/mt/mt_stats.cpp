@@ -24,17 +24,4 @@ MtStats compute_mt_stats(const Mt& mt) {
   return stats;
 }
 
-std::optional<MtPreset> find_mt_preset(const std::string& name) {
-  if (name == "paper") {
-    MtPreset preset;
-    preset.name = name;
-    preset.mesh_spec = "builtin:ellipsoid";
-    preset.mesh.builtin_tets = 12500;
-    preset.build.preserve_boundary = false;
-    preset.build.collapses_per_fragment = 2;
-    return preset;
-  }
-  return std::nullopt;
-}
-
 }  // namespace mtcut::engine

@@ -1,0 +1,18 @@
+#include "engine/mt/mt_presets.h"
+
+namespace mtcut::engine {
+
+std::optional<MtPreset> find_mt_preset(const std::string& name) {
+  if (name == "paper") {
+    MtPreset preset;
+    preset.name = name;
+    preset.mesh_spec = "builtin:ellipsoid";
+    preset.mesh.builtin_tets = 12500;
+    preset.build.preserve_boundary = false;
+    preset.build.collapses_per_fragment = 2;
+    return preset;
+  }
+  return std::nullopt;
+}
+
+}  // namespace mtcut::engine
