@@ -2,11 +2,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "engine/tet_geometry.h"
 
 namespace mtcut::sim {
+namespace {
+
+// Spreads the low 21 bits of x to every third bit.
+std::uint64_t spread_bits(std::uint64_t x) {
+  x &= 0x1fffff;
+  x = (x | x << 32) & 0x1f00000000ffffULL;
+  x = (x | x << 16) & 0x1f0000ff0000ffULL;
+  x = (x | x << 8) & 0x100f00f00f00f00fULL;
+  x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+  x = (x | x << 2) & 0x1249249249249249ULL;
+  return x;
+}
+
+// The Morton code of p quantised to 21 bits per axis in the box [lo, hi].
+std::uint64_t morton_key(const engine::Vec3& p, const engine::Vec3& lo, const engine::Vec3& hi) {
+  std::uint64_t key = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double extent = hi[k] - lo[k];
+    const double unit = extent > 0 ? (p[k] - lo[k]) / extent : 0.0;
+    key |= spread_bits(static_cast<std::uint64_t>(std::clamp(unit, 0.0, 1.0) * 2097151.0)) << k;
+  }
+  return key;
+}
+
+}  // namespace
 
 std::size_t SpringModel::num_fixed() const {
   return static_cast<std::size_t>(std::count(inv_mass.begin(), inv_mass.end(), 0.0));
@@ -56,20 +82,37 @@ SpringModel build_spring_model(std::span<const Tet> tets, std::span<const Vec3> 
   SpringModel model;
   model.mass_damping = material.mass_damping;
 
-  // Dense particle numbering in order of first appearance of each vertex.
+  // Dense particle numbering in Morton (z-order) of the rest positions, so
+  // that the particles a spring joins sit close in memory: the spring loops
+  // gather and scatter within cache lines.
+  std::vector<VertId> used;
+  {
+    std::vector<char> seen(rest_positions.size(), 0);
+    for (const Tet& tet : tets)
+      for (const VertId v : tet)
+        if (!seen[v.index()]) {
+          seen[v.index()] = 1;
+          used.push_back(v);
+        }
+  }
+  engine::Vec3 lo = engine::Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const VertId v : used) {
+    lo = lo.cwiseMin(rest_positions[v.index()]);
+    hi = hi.cwiseMax(rest_positions[v.index()]);
+  }
+  std::vector<std::pair<std::uint64_t, VertId>> keyed;
+  keyed.reserve(used.size());
+  for (const VertId v : used) keyed.emplace_back(morton_key(rest_positions[v.index()], lo, hi), v);
+  std::sort(keyed.begin(), keyed.end());
   std::vector<std::int32_t> particle_of(rest_positions.size(), -1);
+  for (const auto& [key, v] : keyed) {
+    particle_of[v.index()] = static_cast<std::int32_t>(model.particle_vertex.size());
+    model.particle_vertex.push_back(v);
+    model.rest_position.push_back(rest_positions[v.index()]);
+  }
   std::vector<std::array<std::int32_t, 4>> local(tets.size());
   for (std::size_t t = 0; t < tets.size(); ++t)
-    for (int k = 0; k < 4; ++k) {
-      const VertId v = tets[t][k];
-      auto& p = particle_of[v.index()];
-      if (p < 0) {
-        p = static_cast<std::int32_t>(model.particle_vertex.size());
-        model.particle_vertex.push_back(v);
-        model.rest_position.push_back(rest_positions[v.index()]);
-      }
-      local[t][k] = p;
-    }
+    for (int k = 0; k < 4; ++k) local[t][k] = particle_of[tets[t][k].index()];
   const std::size_t n = model.particle_vertex.size();
   model.mass.assign(n, 0.0);
 
