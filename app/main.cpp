@@ -7,6 +7,7 @@
 
 #include "app/bench_command.h"
 #include "app/mesh_command.h"
+#include "app/mt_command.h"
 #include "engine/input_error.h"
 
 int main(int argc, char** argv) {
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "mtcut 0.1.0");
 
   mtcut::app::register_mesh_command(app);
+  mtcut::app::register_mt_command(app);
   mtcut::app::register_bench_command(app);
 
   try {

@@ -1,0 +1,123 @@
+#include "app/mt_command.h"
+
+#include <chrono>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "app/json_report.h"
+#include "engine/input_error.h"
+#include "engine/mesh_loader.h"
+#include "engine/mt/frontier.h"
+#include "engine/mt/mt_builder.h"
+#include "engine/mt/mt_presets.h"
+#include "engine/mt/mt_stats.h"
+
+namespace mtcut::app {
+namespace {
+
+struct MtOptions {
+  std::string input;
+  std::string preset;
+  engine::MeshLoadDef load;
+  engine::MtBuildOptions build;
+  std::vector<double> size;
+  bool no_preserve_boundary = false;
+  bool skip_validation = false;
+  bool json = false;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void run_mt(MtOptions& options) {
+  std::string spec = options.input;
+  if (!options.preset.empty()) {
+    const auto preset = engine::find_mt_preset(options.preset);
+    if (!preset) throw engine::InputError("--preset " + options.preset + ": unknown preset (known: paper)");
+    if (spec.empty()) spec = preset->mesh_spec;
+    options.load = preset->mesh;
+    options.build = preset->build;
+  }
+  if (spec.empty()) throw engine::InputError("give a mesh (builtin:NAME or a file) or --preset");
+  if (!options.size.empty()) {
+    if (options.size.size() != 3) throw engine::InputError("--size: give three extents x,y,z");
+    options.load.builtin_size = engine::Vec3(options.size[0], options.size[1], options.size[2]);
+  }
+  if (options.no_preserve_boundary) options.build.preserve_boundary = false;
+
+  auto start = std::chrono::steady_clock::now();
+  const engine::LoadedMesh loaded = engine::load_mesh(spec, options.load);
+  const double mesh_seconds = seconds_since(start);
+  if (const auto report = loaded.mesh.validate(); !report.ok())
+    throw engine::InputError(spec + ": invalid tet mesh: " + report.problems.front());
+
+  engine::MtBuildReport build_report;
+  start = std::chrono::steady_clock::now();
+  const engine::Mt mt = engine::build_mt(loaded.mesh, options.build, &build_report);
+  const double build_seconds = seconds_since(start);
+  const engine::MtStats stats = engine::compute_mt_stats(mt);
+
+  nlohmann::ordered_json out = {{"input", spec}};
+  if (!options.preset.empty()) out["preset"] = options.preset;
+  out["vertices"] = stats.vertices;
+  out["tets_total"] = stats.tets_total;
+  out["fragments"] = stats.fragments;
+  out["dag_depth"] = stats.dag_depth;
+  out["finest_tets"] = stats.finest_tets;
+  out["coarsest_tets"] = stats.coarsest_tets;
+  out["collapses"] = build_report.collapses;
+  out["rounds"] = build_report.rounds;
+  out["preserve_boundary"] = options.build.preserve_boundary;
+  out["megabytes"] = static_cast<double>(stats.bytes) / (1024.0 * 1024.0);
+  out["mesh_seconds"] = mesh_seconds;
+  out["build_seconds"] = build_seconds;
+  if (!options.skip_validation) {
+    start = std::chrono::steady_clock::now();
+    const engine::ValidationReport report = mt.validate();
+    out["valid"] = report.ok();
+    out["validate_seconds"] = seconds_since(start);
+    if (!report.ok()) out["problems"] = report.problems;
+  }
+  if (options.json) {
+    std::cout << out.dump() << "\n";
+  } else {
+    print_human(std::cout, out);
+  }
+  if (out.contains("valid") && !out["valid"].get<bool>())
+    throw engine::InputError(spec + ": the MT built is not valid (an internal error; please report it)");
+}
+
+}  // namespace
+
+void register_mt_command(CLI::App& app) {
+  auto options = std::make_shared<MtOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "mt",
+      "Build the multiresolution model (Multi-Tessellation) of a mesh by half-edge collapses; validate it; print its "
+      "figures.\n"
+      "  mtcut mt ../shared/meshes/liver2.obj --json\n"
+      "  mtcut mt --preset paper --json");
+  cmd->add_option("input", options->input, "builtin:NAME, a surface to mesh, or a tet mesh file (as for `mtcut mesh`)");
+  cmd->add_option("--preset", options->preset, "a named configuration: paper (the paper's Table 1 MT size)");
+  cmd->add_option("--target-coarsest", options->build.target_coarsest_tets,
+                  "stop simplifying at this many tets (0: as far as valid collapses go)")
+      ->capture_default_str();
+  cmd->add_option("--collapses-per-fragment", options->build.collapses_per_fragment,
+                  "neighbouring collapses grouped into one fragment")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--no-preserve-boundary", options->no_preserve_boundary,
+                "let collapses move the surface (by at most their error)");
+  cmd->add_option("--tets", options->load.builtin_tets, "target tet count of a builtin shape")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--size", options->size, "extents x,y,z of a builtin shape in metres")->delimiter(',');
+  cmd->add_option("--max-volume", options->load.meshing.max_volume, "largest tet volume when meshing a surface")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--no-validate", options->skip_validation, "skip MT::validate() (large meshes)");
+  cmd->add_flag("--json", options->json, "print one JSON object");
+  cmd->callback([options] { run_mt(*options); });
+}
+
+}  // namespace mtcut::app
