@@ -1,1 +1,0 @@
-// Empty until the cut layer lands; keeps the library target buildable.

@@ -1,0 +1,229 @@
+#include "cut/cut_polygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+#include "engine/input_error.h"
+
+namespace mtcut::cut {
+namespace {
+
+using engine::InputError;
+using engine::orient3d_sign;
+
+double cross2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+std::string format_point(const Vec3& p) {
+  std::ostringstream out;
+  out.precision(9);
+  out << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return out.str();
+}
+
+// The three corners spanning the largest triangle: the best conditioned
+// plane through the input. O(n^3) for small polygons, a spread fan otherwise.
+std::array<std::size_t, 3> widest_triangle(const std::vector<Vec3>& p) {
+  const std::size_t n = p.size();
+  if (n > 24) return {0, n / 3, (2 * n) / 3};
+  std::array<std::size_t, 3> best = {0, 1, 2};
+  double best_area = -1;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      for (std::size_t k = j + 1; k < n; ++k) {
+        const double area = (p[j] - p[i]).cross(p[k] - p[i]).squaredNorm();
+        if (area > best_area) {
+          best_area = area;
+          best = {i, j, k};
+        }
+      }
+  return best;
+}
+
+}  // namespace
+
+CutPolygon CutPolygon::from_points(const std::vector<Vec3>& points, const std::string& source,
+                                   const CutPolygonDef& def) {
+  const std::size_t n = points.size();
+  if (n < 3) throw InputError(source + ": a cut polygon needs at least 3 corners, got " + std::to_string(n));
+  for (std::size_t i = 0; i < n; ++i)
+    if (!points[i].allFinite()) throw InputError(source + ": corner " + std::to_string(i + 1) + " is not finite");
+
+  CutPolygon poly;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) poly.diameter_ = std::max(poly.diameter_, (points[i] - points[j]).norm());
+  if (poly.diameter_ == 0) throw InputError(source + ": all corners coincide");
+  const double d = poly.diameter_;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    if ((points[i] - points[j]).norm() <= 1e-12 * d)
+      throw InputError(source + ": corners " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
+                       " coincide");
+  }
+
+  // Newell's normal: its length is twice the area, its direction follows the order.
+  Vec3 centroid = Vec3::Zero();
+  for (const Vec3& p : points) centroid += p;
+  centroid /= static_cast<double>(n);
+  Vec3 newell = Vec3::Zero();
+  for (std::size_t i = 0; i < n; ++i) newell += (points[i] - centroid).cross(points[(i + 1) % n] - centroid);
+  if (0.5 * newell.norm() < def.min_relative_area * d * d)
+    throw InputError(source + ": the corners are collinear (zero area)");
+  const Vec3 fitted = newell.normalized();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double off = std::abs((points[i] - centroid).dot(fitted));
+    if (off > def.planarity_tolerance * d)
+      throw InputError(source + ": not planar: corner " + std::to_string(i + 1) + " " + format_point(points[i]) +
+                       " is " + std::to_string(off) + " off the plane of the others");
+  }
+
+  // Freeze three corners as the exact plane, oriented like the outline.
+  auto tri = widest_triangle(points);
+  if ((points[tri[1]] - points[tri[0]]).cross(points[tri[2]] - points[tri[0]]).dot(fitted) < 0)
+    std::swap(tri[1], tri[2]);
+  poly.plane_ = {points[tri[0]], points[tri[1]], points[tri[2]]};
+  poly.normal_ = (poly.plane_[1] - poly.plane_[0]).cross(poly.plane_[2] - poly.plane_[0]).normalized();
+  poly.origin_ = poly.plane_[0];
+  poly.corners_.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool frozen = i == tri[0] || i == tri[1] || i == tri[2];
+    const Vec3& p = points[i];
+    poly.corners_.push_back(frozen ? p : Vec3(p - (p - poly.origin_).dot(poly.normal_) * poly.normal_));
+  }
+
+  poly.axis_u_ = (poly.plane_[1] - poly.plane_[0]).normalized();
+  poly.axis_v_ = poly.normal_.cross(poly.axis_u_);
+  for (const Vec3& c : poly.corners_) poly.corners2d_.push_back(poly.project(c));
+
+  // Convex and simple: every turn is to the left (collinear allowed) and the
+  // outline turns once around.
+  double turning = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d e0 = poly.corners2d_[(i + 1) % n] - poly.corners2d_[i];
+    const Eigen::Vector2d e1 = poly.corners2d_[(i + 2) % n] - poly.corners2d_[(i + 1) % n];
+    const double c = cross2d(e0, e1);
+    if (c < -1e-12 * d * d)
+      throw InputError(source + ": not convex at corner " + std::to_string((i + 1) % n + 1) + " " +
+                       format_point(points[(i + 1) % n]));
+    turning += std::atan2(c, e0.dot(e1));
+  }
+  if (std::abs(turning - 2 * std::numbers::pi) > 1e-6)
+    throw InputError(source + ": the outline crosses itself (not a simple convex polygon)");
+
+  poly.box_min_ = poly.box_max_ = poly.corners_[0];
+  for (const Vec3& c : poly.corners_) {
+    poly.box_min_ = poly.box_min_.cwiseMin(c);
+    poly.box_max_ = poly.box_max_.cwiseMax(c);
+  }
+  return poly;
+}
+
+Eigen::Vector2d CutPolygon::project(const Vec3& x) const {
+  const Vec3 r = x - origin_;
+  return {r.dot(axis_u_), r.dot(axis_v_)};
+}
+
+int CutPolygon::side(const Vec3& x) const { return orient3d_sign(plane_[0], plane_[1], plane_[2], x); }
+
+double CutPolygon::signed_distance(const Vec3& x) const { return (x - origin_).dot(normal_); }
+
+int CutPolygon::line_crossing(const Vec3& a, const Vec3& b) const {
+  bool pos = false, neg = false, zero = false;
+  const std::size_t n = corners_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const int s = orient3d_sign(a, b, corners_[i], corners_[(i + 1) % n]);
+    pos |= s > 0;
+    neg |= s < 0;
+    zero |= s == 0;
+    if (pos && neg) return -1;
+  }
+  if (zero) return (pos || neg) ? 0 : -1;  // all zero: the line lies in the plane
+  return 1;
+}
+
+int CutPolygon::projects_inside(const Vec3& x) const {
+  const Vec3 above = x + diameter_ * normal_;
+  return line_crossing(x, above);
+}
+
+double CutPolygon::distance_outside(const Vec3& x) const {
+  const Eigen::Vector2d p = project(x);
+  const std::size_t n = corners2d_.size();
+  bool inside = true;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d& a = corners2d_[i];
+    const Eigen::Vector2d& b = corners2d_[(i + 1) % n];
+    const Eigen::Vector2d e = b - a;
+    if (cross2d(e, p - a) < 0) inside = false;
+    const double s = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    best = std::min(best, (a + s * e - p).norm());
+  }
+  return inside ? 0.0 : best;
+}
+
+double CutPolygon::exit_parameter(const Vec3& p, const Vec3& q) const {
+  const Eigen::Vector2d a = project(p);
+  const Eigen::Vector2d dir = project(q) - a;
+  const std::size_t n = corners2d_.size();
+  double s_max = 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d& c = corners2d_[i];
+    const Eigen::Vector2d e = corners2d_[(i + 1) % n] - c;
+    const Eigen::Vector2d inward(-e.y(), e.x());
+    const double f0 = inward.dot(a - c);
+    if (f0 < 0) return 0.0;
+    const double slope = inward.dot(dir);
+    if (slope < 0) s_max = std::min(s_max, f0 / -slope);
+  }
+  return std::clamp(s_max, 0.0, 1.0);
+}
+
+std::vector<CutPolygon> sweep_blade(const Vec3& a0, const Vec3& b0, const Vec3& a1, const Vec3& b1,
+                                    const CutPolygonDef& def) {
+  auto attempt = [&](const std::vector<Vec3>& pts) -> std::optional<CutPolygon> {
+    try {
+      return CutPolygon::from_points(pts, "blade sweep", def);
+    } catch (const InputError&) {
+      return std::nullopt;
+    }
+  };
+  if (auto quad = attempt({a0, b0, b1, a1})) return {*quad};
+  std::vector<CutPolygon> out;
+  if (auto t = attempt({a0, b0, b1})) out.push_back(*t);
+  if (auto t = attempt({a0, b1, a1})) out.push_back(*t);
+  return out;
+}
+
+CutPolygon parse_cut_polygon(const std::string& text, const std::string& source, const CutPolygonDef& def) {
+  std::vector<Vec3> corners;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    const std::string item = text.substr(start, end - start);
+    const std::string where = source + ": corner " + std::to_string(corners.size() + 1) + " (\"" + item + "\")";
+    if (std::count(item.begin(), item.end(), ',') != 2)
+      throw InputError(where + " needs exactly 3 comma-separated coordinates");
+    Vec3 p;
+    std::size_t pos = 0;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t comma = k < 2 ? item.find(',', pos) : item.size();
+      const std::string number = item.substr(pos, comma - pos);
+      char* stop = nullptr;
+      p[k] = std::strtod(number.c_str(), &stop);
+      const bool blank_tail = std::string(stop).find_first_not_of(" \t") == std::string::npos;
+      if (number.find_first_not_of(" \t") == std::string::npos || !blank_tail)
+        throw InputError(where + ": \"" + number + "\" is not a number");
+      pos = comma + 1;
+    }
+    corners.push_back(p);
+    if (end == text.size()) break;
+    start = end + 1;
+  }
+  return CutPolygon::from_points(corners, source, def);
+}
+
+}  // namespace mtcut::cut

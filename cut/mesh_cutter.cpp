@@ -1,0 +1,182 @@
+#include "cut/mesh_cutter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+#include <stdexcept>
+
+#include "cut/tet_splitter.h"
+#include "engine/tet_adjacency.h"
+#include "engine/tet_geometry.h"
+
+namespace mtcut::cut {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using engine::Tet;
+using engine::TetMesh;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The side a tet that is not cut lies on: the side of its strict vertices,
+// or, when all four are on the cut, the side its vertices lean to.
+VertexState side_of_uncut(const Tet& tet, const CutClassifier& cls) {
+  for (VertId v : tet) {
+    const VertexState s = cls.state(v);
+    if (is_strict(s)) return s;
+  }
+  double lean = 0;
+  for (VertId v : tet) lean += cls.polygon().signed_distance(cls.positions()[v.index()]);
+  return lean < 0 ? VertexState::kNeg : VertexState::kPos;
+}
+
+}  // namespace
+
+std::size_t count_pieces(const TetMesh& mesh) {
+  const engine::TetAdjacency adj = engine::build_adjacency(mesh);
+  std::vector<std::size_t> parent(mesh.num_tets());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::size_t pieces = mesh.num_tets();
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (TetId u : adj.neighbors[t]) {
+      if (!u.valid()) continue;
+      const std::size_t a = find(t), b = find(u.index());
+      if (a != b) {
+        parent[a] = b;
+        --pieces;
+      }
+    }
+  return pieces;
+}
+
+MeshCutResult cut_mesh(TetMesh& mesh, const CutPolygon& polygon, const CutterDef& def, SplitTable* table) {
+  const auto start = Clock::now();
+  SplitTable local(def.scheme);
+  SplitTable& recipes = table ? *table : local;
+  if (recipes.scheme() != def.scheme) throw std::invalid_argument("cut_mesh: the split table is for another scheme");
+
+  MeshCutResult result;
+  CutStats& stats = result.stats;
+  const std::size_t n_tets = mesh.num_tets();
+
+  // Tets whose box comes within the snap margin of the polygon's box.
+  double longest = 0;
+  for (const Tet& tet : mesh.tets)
+    for (const auto& e : engine::kTetEdges)
+      longest = std::max(longest, (mesh.position(tet[e[0]]) - mesh.position(tet[e[1]])).squaredNorm());
+  const double margin = std::max(def.snap, ClassifierDef::kMinSnap) * std::sqrt(longest);
+  const Vec3 box_min = polygon.box_min() - Vec3::Constant(margin);
+  const Vec3 box_max = polygon.box_max() + Vec3::Constant(margin);
+
+  ClassifierDef cdef;
+  cdef.snap = def.snap;
+  CutClassifier cls(polygon, mesh.positions, cdef);
+  std::vector<std::uint32_t> candidates;
+  std::vector<std::uint8_t> is_candidate(n_tets, 0);
+  for (std::size_t t = 0; t < n_tets; ++t) {
+    const Tet& tet = mesh.tets[t];
+    Vec3 lo = mesh.position(tet[0]), hi = lo;
+    for (int i = 1; i < 4; ++i) {
+      lo = lo.cwiseMin(mesh.position(tet[i]));
+      hi = hi.cwiseMax(mesh.position(tet[i]));
+    }
+    if ((lo.array() > box_max.array()).any() || (hi.array() < box_min.array()).any()) continue;
+    if (!cls.add_candidate(tet)) continue;
+    candidates.push_back(static_cast<std::uint32_t>(t));
+    is_candidate[t] = 1;
+  }
+  const auto split_start = Clock::now();
+  cls.finalize();
+  stats.candidate_tets = candidates.size();
+
+  std::vector<std::uint8_t> split_vertex(mesh.num_vertices(), 0);
+  for (VertId v : cls.on_vertices()) {
+    if (cls.state(v) == VertexState::kOnActive) split_vertex[v.index()] = 1;
+    if (cls.snapped(v)) result.snapped_vertices.push_back(v);
+  }
+  stats.snapped_vertices = result.snapped_vertices.size();
+
+  VertexFactory factory(mesh.num_vertices());
+  std::vector<Tet> made;
+  std::vector<std::uint32_t> made_first;
+  auto relabel = [&](std::size_t t) {
+    Tet& tet = mesh.tets[t];
+    if (std::none_of(tet.begin(), tet.end(), [&](VertId v) { return split_vertex[v.index()] != 0; })) return;
+    if (side_of_uncut(tet, cls) == VertexState::kPos) return;  // the positive side keeps the vertex
+    for (VertId& v : tet) {
+      if (!split_vertex[v.index()]) continue;
+      PointKey key;
+      key.kind = PointKind::kVertexCopy;
+      key.side = -1;
+      key.ids[0] = v.value;
+      const VertId original = v;
+      v = factory.get(key, [&] {
+        PointSource s;
+        s.position = mesh.positions[original.index()];
+        s.parents[0] = original;
+        s.weights[0] = 1;
+        return s;
+      });
+    }
+    result.relabeled_tets.push_back(TetId(t));
+  };
+
+  for (std::uint32_t t : candidates) {
+    const Tet tet = mesh.tets[t];
+    const TetConfig config = cls.configure(tet);
+    if (!config.is_cut()) {
+      relabel(t);
+      continue;
+    }
+    made_first.push_back(static_cast<std::uint32_t>(made.size()));
+    const CutCase kind = split_tet(tet, config, cls, recipes, factory, made);
+    ++stats.per_case[static_cast<std::size_t>(kind)];
+    result.split_tets.push_back(TetId(static_cast<std::size_t>(t)));
+  }
+  for (std::size_t t = 0; t < n_tets; ++t)
+    if (!is_candidate[t]) relabel(t);
+  made_first.push_back(static_cast<std::uint32_t>(made.size()));
+
+  // Apply: new vertices, then each split tet's slot and the appended rest.
+  factory.apply(mesh);
+  result.split_first.push_back(0);
+  for (std::size_t i = 0; i < result.split_tets.size(); ++i) {
+    const TetId old = result.split_tets[i];
+    for (std::uint32_t j = made_first[i]; j < made_first[i + 1]; ++j) {
+      TetId id = old;
+      if (j == made_first[i]) {
+        mesh.tets[old.index()] = made[j];
+      } else {
+        id = TetId(mesh.tets.size());
+        mesh.tets.push_back(made[j]);
+      }
+      result.replacements.push_back(id);
+    }
+    result.split_first.push_back(static_cast<std::uint32_t>(result.replacements.size()));
+  }
+  stats.split_seconds = seconds_since(split_start);
+
+  stats.split_tets = result.split_tets.size();
+  stats.new_tets = made.size();
+  stats.relabeled_tets = result.relabeled_tets.size();
+  result.new_vertices = factory.made();
+  stats.new_vertices = result.new_vertices.size();
+  stats.split_vertices = static_cast<std::size_t>(std::count_if(
+      result.new_vertices.begin(), result.new_vertices.end(),
+      [](const NewVertex& v) { return v.key.kind == PointKind::kVertexCopy; }));
+  for (TetId id : result.replacements) {
+    const auto c = mesh.corners(id);
+    stats.min_dihedral_deg = std::min(stats.min_dihedral_deg, engine::min_dihedral_deg(c[0], c[1], c[2], c[3]));
+  }
+  if (def.count_pieces) stats.pieces = count_pieces(mesh);
+  stats.seconds = seconds_since(start);
+  return result;
+}
+
+}  // namespace mtcut::cut

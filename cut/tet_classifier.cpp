@@ -1,0 +1,256 @@
+#include "cut/tet_classifier.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/tet_geometry.h"
+
+namespace mtcut::cut {
+
+using engine::kTetEdges;
+using engine::Vec3;
+
+const char* case_name(CutCase c) {
+  switch (c) {
+    case CutCase::kA: return "A";
+    case CutCase::kB: return "B";
+    case CutCase::kC: return "C";
+    case CutCase::kD: return "D";
+    case CutCase::kE: return "E";
+    case CutCase::kO: return "O";
+    case CutCase::kVertex: return "vertex";
+    case CutCase::kCount: break;
+  }
+  return "?";
+}
+
+// ---- TetConfig ---------------------------------------------------------------
+
+bool TetConfig::straddles(int edge) const {
+  const VertexState a = vertex[kTetEdges[edge][0]], b = vertex[kTetEdges[edge][1]];
+  return is_strict(a) && is_strict(b) && a != b;
+}
+
+bool TetConfig::is_cut() const {
+  bool neg = false, pos = false, active_on = false;
+  for (VertexState s : vertex) {
+    neg |= s == VertexState::kNeg;
+    pos |= s == VertexState::kPos;
+    active_on |= s == VertexState::kOnActive;
+  }
+  for (int k = 0; k < 6; ++k)
+    if (edge_active(k)) return true;
+  return active_on && neg && pos;
+}
+
+std::uint32_t TetConfig::key() const {
+  std::uint32_t key = 0;
+  for (int i = 0; i < 4; ++i) key |= static_cast<std::uint32_t>(vertex[i]) << (2 * i);
+  for (int k = 0; k < 6; ++k)
+    if (edge_active(k)) key |= 1u << (8 + k);
+  // Lehmer code of the id order: 4 * 3 * 2 = 24 values in 5 bits.
+  int code = 0;
+  for (int i = 0; i < 3; ++i) {
+    int smaller = 0;
+    for (int j = i + 1; j < 4; ++j) smaller += rank[j] < rank[i];
+    code = code * (4 - i) + smaller;
+  }
+  key |= static_cast<std::uint32_t>(code) << 14;
+  return key;
+}
+
+CutCase TetConfig::cut_case() const {
+  int neg = 0, pos = 0;
+  for (VertexState s : vertex) {
+    if (is_on(s)) return CutCase::kVertex;
+    neg += s == VertexState::kNeg;
+    pos += s == VertexState::kPos;
+  }
+  int active = 0, sum = 0;
+  for (int k = 0; k < 6; ++k)
+    if (edge_active(k)) {
+      ++active;
+      sum += k;
+    }
+  if (neg == 1 || pos == 1) return active == 3 ? CutCase::kA : active == 2 ? CutCase::kD : CutCase::kC;
+  switch (active) {
+    case 4: return CutCase::kB;
+    case 3: return CutCase::kE;
+    case 2: return sum == 5 ? CutCase::kO : CutCase::kD;  // opposite edges are k and 5 - k
+    default: return CutCase::kC;
+  }
+}
+
+// ---- CutClassifier -----------------------------------------------------------
+
+CutClassifier::CutClassifier(const CutPolygon& polygon, std::span<const Vec3> positions, const ClassifierDef& def)
+    : polygon_(polygon),
+      positions_(positions),
+      snap_(std::clamp(def.snap, ClassifierDef::kMinSnap, 0.45)),
+      face_clamp_(std::clamp(def.snap, 0.05, 0.45)),
+      info_(positions.size()) {}
+
+std::uint64_t CutClassifier::edge_key(VertId a, VertId b) {
+  const auto lo = static_cast<std::uint32_t>(std::min(a.value, b.value));
+  const auto hi = static_cast<std::uint32_t>(std::max(a.value, b.value));
+  return static_cast<std::uint64_t>(lo) << 32 | hi;
+}
+
+std::int8_t CutClassifier::raw_side(VertId v) const {
+  VertexInfo& info = info_[v.index()];
+  if (info.raw == 2) info.raw = static_cast<std::int8_t>(polygon_.side(positions_[v.index()]));
+  return info.raw;
+}
+
+bool CutClassifier::add_candidate(const Tet& tet) {
+  assert(!finalized_);
+  std::array<std::int8_t, 4> s;
+  for (int i = 0; i < 4; ++i) s[i] = raw_side(tet[i]);
+  if (s[0] != 0 && s[0] == s[1] && s[1] == s[2] && s[2] == s[3]) return false;
+
+  for (int i = 0; i < 4; ++i) {
+    VertexInfo& info = info_[tet[i].index()];
+    if (info.reach == 0) touched_.push_back(tet[i]);
+    if (s[i] == 0) info.on = true;
+  }
+  for (int k = 0; k < 6; ++k) {
+    const VertId a = tet[kTetEdges[k][0]], b = tet[kTetEdges[k][1]];
+    const Vec3& pa = positions_[a.index()];
+    const Vec3& pb = positions_[b.index()];
+    const double length = (pa - pb).norm();
+    for (VertId v : {a, b}) {
+      VertexInfo& info = info_[v.index()];
+      info.reach = std::max(info.reach, std::max(length, std::numeric_limits<double>::min()));
+    }
+    if (s[kTetEdges[k][0]] * s[kTetEdges[k][1]] >= 0) continue;
+    auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
+    if (fresh) {
+      const VertId lo = a < b ? a : b, hi = a < b ? b : a;
+      const double d_lo = polygon_.signed_distance(positions_[lo.index()]);
+      const double d_hi = polygon_.signed_distance(positions_[hi.index()]);
+      double t = d_lo - d_hi != 0 ? d_lo / (d_lo - d_hi) : 0.5;
+      if (!std::isfinite(t)) t = 0.5;
+      it->second.t = std::clamp(t, 0.0, 1.0);
+    }
+    const double t = it->second.t;
+    const VertId lo = a < b ? a : b, hi = a < b ? b : a;
+    if (t < snap_) info_[lo.index()].on = true;
+    if (t > 1 - snap_) info_[hi.index()].on = true;
+  }
+  return true;
+}
+
+void CutClassifier::finalize() {
+  assert(!finalized_);
+  finalized_ = true;
+  for (VertId v : touched_) {
+    VertexInfo& info = info_[v.index()];
+    if (!info.on) continue;
+    const Vec3& p = positions_[v.index()];
+    info.active = polygon_.projects_inside(p) >= 0 || polygon_.distance_outside(p) <= snap_ * info.reach;
+    on_vertices_.push_back(v);
+  }
+}
+
+VertexState CutClassifier::state(VertId v) const {
+  const VertexInfo& info = info_[v.index()];
+  if (finalized_ && info.on) return info.active ? VertexState::kOnActive : VertexState::kOnInactive;
+  // Exactly on the plane but never part of a candidate: far from the cut.
+  return raw_side(v) < 0 ? VertexState::kNeg : VertexState::kPos;
+}
+
+bool CutClassifier::snapped(VertId v) const {
+  const VertexInfo& info = info_[v.index()];
+  return info.on && info.raw != 0;
+}
+
+double CutClassifier::crossing_parameter(VertId a, VertId b) const {
+  const auto it = edges_.find(edge_key(a, b));
+  if (it == edges_.end()) throw std::logic_error("crossing_parameter: the edge was not seen by add_candidate");
+  return it->second.t;
+}
+
+bool CutClassifier::crossing_covered(VertId a, VertId b) const {
+  const auto it = edges_.find(edge_key(a, b));
+  if (it == edges_.end()) throw std::logic_error("crossing_covered: the edge was not seen by add_candidate");
+  if (it->second.covered < 0) {
+    const VertId lo = a < b ? a : b, hi = a < b ? b : a;
+    it->second.covered = polygon_.line_crossing(positions_[lo.index()], positions_[hi.index()]) > 0 ? 1 : 0;
+  }
+  return it->second.covered == 1;
+}
+
+TetConfig CutClassifier::configure(const Tet& tet) const {
+  TetConfig config;
+  for (int i = 0; i < 4; ++i) {
+    config.vertex[i] = state(tet[i]);
+    int rank = 0;
+    for (int j = 0; j < 4; ++j) rank += tet[j] < tet[i];
+    config.rank[i] = static_cast<std::uint8_t>(rank);
+  }
+  for (int k = 0; k < 6; ++k)
+    if (config.straddles(k) && crossing_covered(tet[kTetEdges[k][0]], tet[kTetEdges[k][1]]))
+      config.covered |= static_cast<std::uint8_t>(1u << k);
+  return config;
+}
+
+bool CutClassifier::section_ends(const std::array<VertId, 3>& face, SectionEnd& p, SectionEnd& q) const {
+  std::array<VertexState, 3> st;
+  bool neg = false, pos = false;
+  for (int i = 0; i < 3; ++i) {
+    st[i] = state(face[i]);
+    neg |= st[i] == VertexState::kNeg;
+    pos |= st[i] == VertexState::kPos;
+  }
+  if (!(neg && pos)) return false;
+  std::array<SectionEnd, 2> ends;
+  int n = 0;
+  for (int i = 0; i < 3 && n < 2; ++i) {
+    if (is_on(st[i])) {
+      std::array<double, 3> w{0, 0, 0};
+      w[i] = 1;
+      ends[n++] = {positions_[face[i].index()], w, st[i] == VertexState::kOnActive};
+    }
+  }
+  for (int i = 0; i < 3 && n < 2; ++i) {
+    const int j = (i + 1) % 3;
+    if (!is_strict(st[i]) || !is_strict(st[j]) || st[i] == st[j]) continue;
+    const bool i_low = face[i] < face[j];
+    const int lo = i_low ? i : j, hi = i_low ? j : i;
+    const double t = crossing_parameter(face[i], face[j]);
+    std::array<double, 3> w{0, 0, 0};
+    w[lo] = 1 - t;
+    w[hi] = t;
+    const Vec3& plo = positions_[face[lo].index()];
+    const Vec3& phi = positions_[face[hi].index()];
+    ends[n++] = {plo + t * (phi - plo), w, crossing_covered(face[i], face[j])};
+  }
+  if (n != 2) return false;
+  p = ends[0];
+  q = ends[1];
+  return true;
+}
+
+CutClassifier::FacePoint CutClassifier::face_point(const std::array<VertId, 3>& face) const {
+  SectionEnd p, q;
+  if (!section_ends(face, p, q)) throw std::logic_error("face_point: the face is not crossed by the cut");
+  if (!p.active) std::swap(p, q);
+  const double s = std::clamp(polygon_.exit_parameter(p.position, q.position), face_clamp_, 1 - face_clamp_);
+  FacePoint out;
+  out.position = p.position + s * (q.position - p.position);
+  for (int i = 0; i < 3; ++i) out.weights[i] = (1 - s) * p.weights[i] + s * q.weights[i];
+  return out;
+}
+
+CutClassifier::FacePoint CutClassifier::face_node(const std::array<VertId, 3>& face) const {
+  SectionEnd p, q;
+  if (!section_ends(face, p, q)) throw std::logic_error("face_node: the face is not crossed by the cut");
+  FacePoint out;
+  out.position = 0.5 * (p.position + q.position);
+  for (int i = 0; i < 3; ++i) out.weights[i] = 0.5 * (p.weights[i] + q.weights[i]);
+  return out;
+}
+
+}  // namespace mtcut::cut

@@ -1,0 +1,44 @@
+#pragma once
+// Splitting one tet: its configuration picks a recipe (SplitTable), and the
+// recipe's local labels become keyed points (vertex_factory.h). This is the
+// per-tet step that every cutter shares: the single-resolution mesh cutter
+// here, and the MT cutter that applies it to every resolution.
+//
+// Pure: given the classifier's vertex states (fixed once per cut, see
+// tet_classifier.h) the result depends only on the tet's four global ids,
+// their positions and the polygon. Two tets sharing an edge or a face, in
+// any fragment or resolution, name the points on it with the same keys and
+// compute them from the same bits, so they get the same vertices.
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "cut/split_table.h"
+#include "cut/tet_classifier.h"
+#include "cut/vertex_factory.h"
+
+namespace mtcut::cut {
+
+// The key of the point `label` of `tet` (global ids, sorted).
+PointKey point_key(const Tet& tet, Label label);
+// Where that point is. `recipe` is used for the 1:17 centre only.
+PointSource point_source(const Tet& tet, Label label, const CutClassifier& classifier, const SplitRecipe& recipe);
+
+// The split of one tet over keyed points, positively oriented.
+struct KeyedSplit {
+  CutCase kind = CutCase::kA;
+  std::vector<std::array<PointKey, 4>> tets;
+  std::vector<PointKey> points;          // the distinct new points used
+  std::vector<PointSource> sources;      // (points) where each is
+};
+
+// nullopt when the tet is not cut.
+std::optional<KeyedSplit> split_tet_keyed(const Tet& tet, const CutClassifier& classifier, SplitTable& table);
+
+// The same, resolved to vertex ids by `factory`; the tets are appended to
+// `out`. `config` must be classifier.configure(tet) and cut. Returns the case.
+CutCase split_tet(const Tet& tet, const TetConfig& config, const CutClassifier& classifier, SplitTable& table,
+                  VertexFactory& factory, std::vector<Tet>& out);
+
+}  // namespace mtcut::cut
