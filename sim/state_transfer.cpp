@@ -21,10 +21,10 @@ std::array<double, 4> barycentric(const std::array<Vec3, 4>& c, const Vec3& p) {
   return w;
 }
 
-enum class Source { kKept, kInterpolated, kEdge, kExtrapolated };
+enum class Source { kKept, kInterpolated, kCut, kExtrapolated };
 
 std::pair<Vec3, Vec3> sample(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snap,
-                             VertId v, const EdgeOriginLookup& origins, Source& source, int depth) {
+                             VertId v, const OriginLookup& origins, Source& source, int depth) {
   if (v.index() < snap.particle_of.size() && snap.particle_of[v.index()] >= 0) {
     source = Source::kKept;
     const auto p = static_cast<std::size_t>(snap.particle_of[v.index()]);
@@ -33,10 +33,15 @@ std::pair<Vec3, Vec3> sample(const engine::Mt& mt, const engine::TetBvh& bvh, co
   if (origins && depth < 64) {
     if (const auto origin = origins(v)) {
       Source ignored;
-      const auto [xa, va] = sample(mt, bvh, snap, origin->a, origins, ignored, depth + 1);
-      const auto [xb, vb] = sample(mt, bvh, snap, origin->b, origins, ignored, depth + 1);
-      source = Source::kEdge;
-      return {(1 - origin->s) * xa + origin->s * xb, (1 - origin->s) * va + origin->s * vb};
+      Vec3 x = Vec3::Zero(), vel = Vec3::Zero();
+      for (int k = 0; k < 4; ++k) {
+        if (!origin->parents[k].valid()) continue;
+        const auto [xp, vp] = sample(mt, bvh, snap, origin->parents[k], origins, ignored, depth + 1);
+        x += origin->weights[k] * xp;
+        vel += origin->weights[k] * vp;
+      }
+      source = Source::kCut;
+      return {x, vel};
     }
   }
   const Vec3& rest = mt.position(v);
@@ -94,13 +99,13 @@ DeformationSnapshot take_snapshot(const engine::Mt& mt, const engine::Frontier& 
 }
 
 std::pair<Vec3, Vec3> sample_vertex(const engine::Mt& mt, const engine::TetBvh& bvh,
-                                    const DeformationSnapshot& snapshot, VertId v, const EdgeOriginLookup& origins) {
+                                    const DeformationSnapshot& snapshot, VertId v, const OriginLookup& origins) {
   Source ignored;
   return sample(mt, bvh, snapshot, v, origins, ignored, 0);
 }
 
 SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
-                           const SpringModel& model, const EdgeOriginLookup& origins, TransferReport* report) {
+                           const SpringModel& model, const OriginLookup& origins, TransferReport* report) {
   TransferReport local;
   SpringState state;
   const std::size_t n = model.num_particles();
@@ -114,7 +119,7 @@ SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, cons
     switch (source) {
       case Source::kKept: ++local.kept; break;
       case Source::kInterpolated: ++local.interpolated; break;
-      case Source::kEdge: ++local.from_edges; break;
+      case Source::kCut: ++local.from_cut; break;
       case Source::kExtrapolated: ++local.extrapolated; break;
     }
     if (model.inv_mass[p] == 0) {

@@ -7,8 +7,9 @@
 // it, every particle of the new model gets its position and velocity from
 // the snapshot:
 //  - a vertex that was simulated keeps its own state;
-//  - a vertex made by a cut lies on a parent edge at parameter s: it gets
-//    (1 - s) * state(a) + s * state(b) (a and b sampled recursively);
+//  - a vertex made by a cut is an affine combination of parent vertices
+//    (two for an edge point, three for a face point): it gets the same
+//    combination of their states (parents sampled recursively);
 //  - any other vertex (one that a refinement brings back, or a hidden one)
 //    gets the barycentric interpolation, in rest space, of the corners of the
 //    old simulated tet that contains its rest position (TetBvh over all MT
@@ -18,6 +19,7 @@
 // velocity correction of the free particles makes the linear momentum after
 // the change equal to the momentum before it, to round-off.
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <utility>
@@ -31,13 +33,14 @@
 
 namespace mtcut::sim {
 
-// Where a cut vertex came from: rest position = (1 - s) * rest(a) + s * rest(b).
-struct EdgeOrigin {
-  VertId a, b;
-  double s = 0;
+// Where a cut vertex came from: rest position = sum weights[i] * rest(parents[i])
+// over the valid parents (the cutter's record of each vertex it makes).
+struct VertexOrigin {
+  std::array<VertId, 4> parents{};
+  std::array<double, 4> weights{};
 };
 // Looks up the origin of a vertex made by a cut (nullopt for any other vertex).
-using EdgeOriginLookup = std::function<std::optional<EdgeOrigin>(VertId)>;
+using OriginLookup = std::function<std::optional<VertexOrigin>(VertId)>;
 
 struct DeformationSnapshot {
   std::vector<engine::TetId> tets;        // simulated tets, sorted
@@ -59,19 +62,19 @@ DeformationSnapshot take_snapshot(const engine::Mt& mt, const engine::Frontier& 
 // boundary) follows the nearest simulated particle rigidly.
 std::pair<Vec3, Vec3> sample_vertex(const engine::Mt& mt, const engine::TetBvh& bvh,
                                     const DeformationSnapshot& snapshot, VertId v,
-                                    const EdgeOriginLookup& origins = {});
+                                    const OriginLookup& origins = {});
 
 struct TransferReport {
   std::size_t kept = 0;          // particles that existed before
   std::size_t interpolated = 0;  // new particles inside an old tet
-  std::size_t from_edges = 0;    // new particles made by a cut
+  std::size_t from_cut = 0;      // new particles made by a cut
   std::size_t extrapolated = 0;  // new particles outside every old tet
   Vec3 momentum_correction = Vec3::Zero();  // the uniform dv applied
 };
 
 // The state of `model` (the new one) from the snapshot.
 SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
-                           const SpringModel& model, const EdgeOriginLookup& origins = {},
+                           const SpringModel& model, const OriginLookup& origins = {},
                            TransferReport* report = nullptr);
 
 }  // namespace mtcut::sim

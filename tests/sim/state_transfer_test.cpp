@@ -111,7 +111,7 @@ TEST_P(TransferOnMeshes, RandomLodStepsConserveMassAndMomentumAndCarryAffineFiel
 INSTANTIATE_TEST_SUITE_P(Meshes, TransferOnMeshes,
                          ::testing::Values(std::string("builtin:ellipsoid"), test::shared_mesh("liver.msh")));
 
-TEST(StateTransfer, CutVerticesComeFromTheirParentEdge) {
+TEST(StateTransfer, CutVerticesComeFromTheirParents) {
   engine::MeshLoadDef load;
   load.builtin_tets = 300;
   const engine::TetMesh fine = engine::load_mesh("builtin:box", load).mesh;
@@ -124,8 +124,8 @@ TEST(StateTransfer, CutVerticesComeFromTheirParentEdge) {
   const engine::TetBvh bvh(mt);
   const VertId a = mt.tet(frontier.tets()[0])[0], b = mt.tet(frontier.tets()[0])[1];
   const VertId made = mt.add_vertex(0.75 * mt.position(a) + 0.25 * mt.position(b));
-  const EdgeOriginLookup origins = [&](VertId v) -> std::optional<EdgeOrigin> {
-    if (v == made) return EdgeOrigin{a, b, 0.25};
+  const OriginLookup origins = [&](VertId v) -> std::optional<VertexOrigin> {
+    if (v == made) return VertexOrigin{{a, b, VertId(), VertId()}, {0.75, 0.25, 0, 0}};
     return std::nullopt;
   };
   const auto [x, v] = sample_vertex(mt, bvh, snap, made, origins);
