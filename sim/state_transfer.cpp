@@ -86,8 +86,13 @@ bool DeformationSnapshot::simulated(engine::TetId t) const { return std::binary_
 
 DeformationSnapshot take_snapshot(const engine::Mt& mt, const engine::Frontier& frontier, const SpringModel& model,
                                   const SpringState& state) {
+  return take_snapshot(mt, frontier.tets(), model, state);
+}
+
+DeformationSnapshot take_snapshot(const engine::Mt& mt, std::span<const engine::TetId> tets,
+                                  const SpringModel& model, const SpringState& state) {
   DeformationSnapshot snap;
-  snap.tets.assign(frontier.tets().begin(), frontier.tets().end());
+  snap.tets.assign(tets.begin(), tets.end());
   std::sort(snap.tets.begin(), snap.tets.end());
   snap.particle_of.assign(mt.num_vertices(), -1);
   for (std::size_t p = 0; p < model.num_particles(); ++p)

@@ -22,6 +22,7 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -54,6 +55,10 @@ struct DeformationSnapshot {
 // What the simulator holds now, taken before the MT or the frontier changes.
 DeformationSnapshot take_snapshot(const engine::Mt& mt, const engine::Frontier& frontier, const SpringModel& model,
                                   const SpringState& state);
+// The same, from the tets that were simulated (the frontier may have moved
+// since, as long as the model and state are still the ones built on `tets`).
+DeformationSnapshot take_snapshot(const engine::Mt& mt, std::span<const engine::TetId> tets,
+                                  const SpringModel& model, const SpringState& state);
 
 // Deformed position and velocity of any MT vertex under the snapshot. `bvh`
 // indexes the MT's live tets, which must still include the snapshot's tets

@@ -1,0 +1,23 @@
+#include "sim/scalpel.h"
+
+#include <algorithm>
+
+namespace mtcut::sim {
+
+ScalpelPose ScalpelPath::pose_at(double time) const {
+  if (keys_.empty()) return {};
+  if (time <= keys_.front().time) return keys_.front().pose;
+  if (time >= keys_.back().time) return keys_.back().pose;
+  const auto next = std::upper_bound(keys_.begin(), keys_.end(), time,
+                                     [](double t, const ScalpelKeyframe& k) { return t < k.time; });
+  const ScalpelKeyframe& b = *next;
+  const ScalpelKeyframe& a = *(next - 1);
+  const double s = (time - a.time) / (b.time - a.time);
+  ScalpelPose pose;
+  pose.base = (1 - s) * a.pose.base + s * b.pose.base;
+  pose.tip = (1 - s) * a.pose.tip + s * b.pose.tip;
+  pose.engaged = a.pose.engaged;
+  return pose;
+}
+
+}  // namespace mtcut::sim

@@ -1,0 +1,132 @@
+#include "sim/world.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+#include "sim/forces.h"
+#include "sim/state_transfer.h"
+
+namespace mtcut::sim {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+SpringModel build_model(const engine::Mt& mt, const engine::Frontier& frontier, const WorldDef& def) {
+  std::vector<engine::Tet> tets;
+  tets.reserve(frontier.tets().size());
+  for (const auto t : frontier.tets()) tets.push_back(mt.tet(t));
+  return build_spring_model(tets, mt.positions(), def.material,
+                            [&](VertId v) { return def.fixed.contains(v, mt.position(v)); });
+}
+
+}  // namespace
+
+World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt)), bvh_(mt_) {
+  frontier_ = def_.lod.enabled ? engine::Frontier::coarsest(mt_) : engine::Frontier::finest(mt_);
+  model_ = build_model(mt_, frontier_, def_);
+  state_ = rest_state(model_);
+}
+
+engine::ErrorField World::error_field(const Vec3& focus) const {
+  engine::ErrorField field;
+  field.focus = focus;
+  field.radius = def_.lod.near_radius;
+  field.near_error = def_.lod.near_error;
+  const double span = std::max(1e-9, def_.lod.far_radius - def_.lod.near_radius);
+  field.growth = std::max(0.0, def_.lod.far_error - def_.lod.near_error) / span;
+  return field;
+}
+
+Environment World::environment_for(const ScalpelPose& pose) const {
+  Environment env = def_.environment;
+  if (!pose.engaged && def_.tool_radius > 0) env.tool = Capsule{pose.base, pose.tip, def_.tool_radius};
+  return env;
+}
+
+void World::rebuild_model_from(const DeformationSnapshot& snapshot) {
+  model_ = build_model(mt_, frontier_, def_);
+  state_ = transfer_state(mt_, bvh_, snapshot, model_);
+  stepper_.reset_warm_start();
+}
+
+const FrameMetrics& World::step(const ScalpelPose& pose) {
+  const auto frame_start = Clock::now();
+  FrameMetrics m;
+  m.frame = frame_;
+
+  // Stage 2, cut: the blade's sweep from last_pose_ to pose is cut by the
+  // time-critical cutter once it lands (issue 5); until then nothing is cut.
+  const auto cut_start = Clock::now();
+  m.cut_ms = ms_since(cut_start);
+
+  // Stage 3, lod.
+  const auto lod_start = Clock::now();
+  if (def_.lod.enabled) {
+    const std::uint64_t version = frontier_.version();
+    simulated_tets_.assign(frontier_.tets().begin(), frontier_.tets().end());
+    const auto stats = refiner_.update(mt_, error_field(pose.tip), frontier_);
+    m.lod_changes = stats.refined + stats.coarsened;
+    if (frontier_.version() != version) rebuild_model_from(take_snapshot(mt_, simulated_tets_, model_, state_));
+  }
+  m.lod_ms = ms_since(lod_start);
+
+  // Stage 4, physics.
+  const auto physics_start = Clock::now();
+  const StepReport report = stepper_.step(model_, environment_for(pose), def_.integrator, state_, def_.dt);
+  m.physics_ms = ms_since(physics_start);
+  m.cg_iterations = report.cg_iterations;
+  m.step_refused = !report.accepted;
+
+  // Stage 5, metrics.
+  last_pose_ = pose;
+  time_ += def_.dt;
+  ++frame_;
+  m.time = time_;
+  m.frontier_tets = frontier_.tets().size();
+  m.frontier_vertices = frontier_.vertices().size();
+  m.springs = model_.num_springs();
+  m.total_ms = ms_since(frame_start);
+  last_ = m;
+  return last_;
+}
+
+std::vector<Vec3> World::deformed_positions() const {
+  const DeformationSnapshot snapshot = take_snapshot(mt_, frontier_, model_, state_);
+  std::vector<Vec3> out(mt_.num_vertices());
+  for (std::size_t v = 0; v < out.size(); ++v) out[v] = sample_vertex(mt_, bvh_, snapshot, VertId(v)).first;
+  return out;
+}
+
+std::uint64_t World::state_hash() const {
+  std::vector<std::pair<std::int32_t, std::size_t>> order;  // (MT vertex, particle)
+  order.reserve(model_.num_particles());
+  for (std::size_t p = 0; p < model_.num_particles(); ++p) order.emplace_back(model_.particle_vertex[p].value, p);
+  std::sort(order.begin(), order.end());
+  std::uint64_t hash = 1469598103934665603ULL;
+  auto mix = [&](const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ULL;
+  };
+  const std::uint64_t sizes[2] = {mt_.num_vertices(), mt_.num_live_tets()};
+  mix(sizes, sizeof sizes);
+  for (const auto& [vertex, p] : order) {
+    mix(&vertex, sizeof vertex);
+    mix(state_.x[p].data(), 3 * sizeof(double));
+  }
+  return hash;
+}
+
+engine::ValidationReport World::validate() const {
+  engine::ValidationReport report = mt_.validate();
+  for (auto& p : engine::validate_frontier(mt_, frontier_).problems) report.add("frontier: " + p);
+  for (auto& p : model_.validate().problems) report.add("springs: " + p);
+  if (state_.x.size() != model_.num_particles()) report.add("state and spring model differ in size");
+  return report;
+}
+
+}  // namespace mtcut::sim

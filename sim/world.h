@@ -1,0 +1,94 @@
+#pragma once
+// The simulator: the frame loop of DESIGN.md over one organ.
+//
+// Why this shape. The World owns the multiresolution model (MT), the
+// frontier in use, the spring model built on it and its state, and the
+// scalpel. step() runs the frame as named stages, each timed:
+//   1. scalpel   read the pose for this frame;
+//   2. cut       sweep the engaged blade into cut polygons, run the cutter
+//                within its budget (the MT cut lands with the cutter);
+//   3. lod       unless the cutter froze it, move the frontier toward the
+//                error field around the blade tip (incrementally), rebuild
+//                the springs on it and carry the state over;
+//   4. physics   integrate (guarded: a NaN or an explosion is refused,
+//                counted and the state restored), contacts with floor/blade;
+//   5. metrics   record the frame.
+// The spring model is rebuilt only when the frontier changed, so a frame
+// with a still scalpel costs the integration alone.
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/mt/frontier.h"
+#include "engine/mt/mt.h"
+#include "engine/mt/selective_refinement.h"
+#include "engine/mt/tet_bvh.h"
+#include "sim/scalpel.h"
+#include "sim/spring_model.h"
+#include "sim/spring_state.h"
+#include "sim/stepper.h"
+#include "sim/world_def.h"
+
+namespace mtcut::sim {
+
+struct FrameMetrics {
+  std::uint64_t frame = 0;
+  double time = 0;                 // simulated seconds at the end of the frame
+  double cut_ms = 0, lod_ms = 0, physics_ms = 0, total_ms = 0;
+  std::size_t frontier_tets = 0, frontier_vertices = 0, springs = 0;
+  std::size_t lod_changes = 0;     // fragments added or removed this frame
+  int cg_iterations = 0;
+  bool step_refused = false;
+};
+
+class World {
+ public:
+  // Takes the MT of the organ (built by the caller from a mesh).
+  World(engine::Mt mt, const WorldDef& def);
+
+  // Advances one frame of def.dt with the scalpel at `pose`.
+  const FrameMetrics& step(const ScalpelPose& pose);
+
+  const engine::Mt& mt() const { return mt_; }
+  const engine::Frontier& frontier() const { return frontier_; }
+  const SpringModel& model() const { return model_; }
+  const SpringState& state() const { return state_; }
+  const WorldDef& def() const { return def_; }
+  double time() const { return time_; }
+  std::uint64_t frame() const { return frame_; }
+  std::uint64_t nan_events() const { return stepper_.refused_steps(); }
+  const FrameMetrics& last_frame() const { return last_; }
+
+  // Deformed position of every MT vertex (visible: simulated; hidden:
+  // carried by the frontier tet holding it in rest space), (n_mt_vertices).
+  std::vector<Vec3> deformed_positions() const;
+
+  // FNV-1a over the bits of every particle position (in MT vertex order)
+  // and the MT's size: equal across runs iff the runs are bit-identical.
+  std::uint64_t state_hash() const;
+
+  // MT, frontier and spring model all valid (tests call it after steps).
+  engine::ValidationReport validate() const;
+
+ private:
+  engine::ErrorField error_field(const Vec3& focus) const;
+  // Rebuilds springs on the current frontier and carries the state from `snapshot`.
+  void rebuild_model_from(const struct DeformationSnapshot& snapshot);
+  Environment environment_for(const ScalpelPose& pose) const;
+
+  WorldDef def_;
+  engine::Mt mt_;
+  engine::TetBvh bvh_;
+  engine::Frontier frontier_;
+  engine::SelectiveRefiner refiner_;
+  SpringModel model_;
+  SpringState state_;
+  Stepper stepper_;
+  std::vector<engine::TetId> simulated_tets_;  // the frontier's tets before this frame's LOD move
+  ScalpelPose last_pose_;
+  double time_ = 0;
+  std::uint64_t frame_ = 0;
+  FrameMetrics last_;
+};
+
+}  // namespace mtcut::sim

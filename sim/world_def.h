@@ -1,0 +1,43 @@
+#pragma once
+// Everything that defines a World, with defaults; scenario files (app/) only
+// fill these structs.
+
+#include "engine/mt/mt_builder.h"
+#include "sim/environment.h"
+#include "sim/fixed_region.h"
+#include "sim/material.h"
+#include "sim/stepper.h"
+
+namespace mtcut::sim {
+
+// The level of detail around the scalpel: tets may have error up to
+// near_error within near_radius of the blade tip, growing linearly to
+// far_error at far_radius and beyond (metres of error, as the MT's).
+struct LodDef {
+  bool enabled = true;
+  double near_radius = 0.02;
+  double near_error = 0.0;   // 0: the finest tets near the blade
+  double far_radius = 0.08;
+  double far_error = 1.0;    // large: the coarsest tets far away
+};
+
+// How much cutting a frame may do: in tets (reproducible) or milliseconds.
+struct CutBudgetDef {
+  enum class Unit { kTets, kMilliseconds };
+  Unit unit = Unit::kTets;
+  double amount = 1e9;  // per frame; large = unlimited
+};
+
+struct WorldDef {
+  engine::MtBuildOptions mt;
+  MaterialDef material;
+  FixedRegion fixed;
+  Environment environment;
+  IntegratorDef integrator;
+  LodDef lod;
+  CutBudgetDef cut_budget;
+  double dt = 1.0 / 60.0;        // s per frame
+  double tool_radius = 0.002;    // m; the disengaged blade pushes within it (0: never)
+};
+
+}  // namespace mtcut::sim
