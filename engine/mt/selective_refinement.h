@@ -41,11 +41,20 @@ struct ErrorField {
   Vec3 focus = Vec3::Zero();
   double radius = 0.0;      // within it, near_error applies
   double near_error = 0.0;  // error allowed at the focus (metres)
-  double growth = 0.0;      // error allowed per metre beyond the radius
+  double growth = 0.0;      // error allowed per metre beyond the radius (>= 0)
 
   static ErrorField uniform(double max_error) {
     ErrorField field;
     field.near_error = max_error;
+    return field;
+  }
+  // The scalpel's field: the fine mesh within `radius` of `focus`, then
+  // tets of error (enclosing radius) up to growth x the distance beyond it.
+  static ErrorField around(const Vec3& focus, double radius, double growth = 0.25) {
+    ErrorField field;
+    field.focus = focus;
+    field.radius = radius;
+    field.growth = growth;
     return field;
   }
   double threshold(double distance) const {

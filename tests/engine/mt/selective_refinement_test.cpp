@@ -116,6 +116,22 @@ INSTANTIATE_TEST_SUITE_P(Meshes, SelectiveRefinementOnMeshes,
                            return case_info.param.mesh + (case_info.param.preserve ? "_preserved" : "_free");
                          });
 
+TEST(SelectiveRefinement, AroundTheScalpelTheMeshIsFine) {
+  const Mt& mt = test_mt("box");
+  const Aabb box = mt_box(mt);
+  const ErrorField field = ErrorField::around(box.center(), 0.2 * (box.hi - box.lo).minCoeff());
+  const Frontier frontier = extract_frontier(mt, field);
+  ASSERT_TRUE(validate_frontier(mt, frontier).ok());
+  std::size_t near = 0;
+  for (TetId t : frontier.tets())
+    if (tet_box(mt, t).min_distance(field.focus) <= field.radius) {
+      ++near;
+      EXPECT_EQ(mt.birth(t), mt.root());
+    }
+  EXPECT_GT(near, 0u);
+  EXPECT_LT(frontier.tets().size(), mt.created(mt.root()).size());
+}
+
 TEST(SelectiveRefinement, SmallFocusMovesTouchOnlyNearbyFragments) {
   const Mt& mt = test_mt("ellipsoid-3k", false);
   const Aabb box = mt_box(mt);
