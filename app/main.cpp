@@ -8,6 +8,7 @@
 #include "app/bench_command.h"
 #include "app/mesh_command.h"
 #include "app/mt_command.h"
+#include "app/run_command.h"
 #include "engine/input_error.h"
 
 int main(int argc, char** argv) {
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
 
   mtcut::app::register_mesh_command(app);
   mtcut::app::register_mt_command(app);
+  mtcut::app::register_run_command(app);
   mtcut::app::register_bench_command(app);
 
   try {

@@ -1,0 +1,98 @@
+// End-to-end tests of `mtcut run` and the scenario reader.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/app/run_mtcut.h"
+#include "tests/test_paths.h"
+
+namespace mtcut::test {
+namespace {
+namespace fs = std::filesystem;
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+class RunCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("mtcut-run-" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    base_ = read_text(source_path("config/scenarios/default.toml"));
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+  // The default scenario with `from` replaced by `to` (which must occur).
+  std::string variant(const std::string& from, const std::string& to) const {
+    const auto at = base_.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    std::string text = base_;
+    text.replace(at, from.size(), to);
+    return text;
+  }
+  void expect_rejected(const std::string& scenario_text, const std::string& what) {
+    const std::string file = write("bad.toml", scenario_text);
+    const CommandResult r = run_mtcut("run " + quoted(file) + " --frames 2");
+    EXPECT_EQ(r.exit_code, 1) << what << "\n" << r.err;
+    EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  fs::path dir_;
+  std::string base_;
+};
+
+TEST_F(RunCommand, DefaultScenarioRunsValidAndWritesItsSummary) {
+  const std::string summary = path("summary.json");
+  const CommandResult r =
+      run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 30 --json --summary " +
+                quoted(summary));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(out["valid"].get<bool>());
+  EXPECT_EQ(out["nan_events"].get<int>(), 0);
+  EXPECT_EQ(out["frames"].get<int>(), 30);
+  EXPECT_EQ(nlohmann::json::parse(read_text(summary)), out);
+}
+
+TEST_F(RunCommand, SameScenarioTwiceGivesTheSameStateHash) {
+  const std::string args = "run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 40 --json";
+  const CommandResult a = run_mtcut(args), b = run_mtcut(args);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(nlohmann::json::parse(a.out)["state_hash"], nlohmann::json::parse(b.out)["state_hash"]);
+}
+
+TEST_F(RunCommand, BadScenariosGiveOneLineWithFileAndLine) {
+  expect_rejected(variant("[lod]\n", "[lod]\nnear_radiu = 0.01\n"), "bad.toml:");
+  expect_rejected(variant("[lod]\n", "[lod]\nnear_radiu = 0.01\n"), "unknown key 'lod.near_radiu'");
+  expect_rejected(variant("tets = 8000", "tets = \"many\""), "'mesh.tets' must be an integer");
+  expect_rejected(variant("source = \"builtin:ellipsoid\"", "source = \"no_such_organ.obj\""), "does not exist");
+  expect_rejected(variant("dt = 0.016666666666666666", "dt = -0.01"), "'run.dt' must be positive");
+  expect_rejected("[mesh]\nsource = \"builtin:box\"\n[scalpel]\n", "needs at least one [[scalpel.keyframes]]");
+  expect_rejected(variant("source = \"builtin:ellipsoid\"",
+                          "source = \"" + shared_mesh("liver_for_test_broken.vtk") + "\""),
+                  "liver_for_test_broken.vtk");
+  expect_rejected("[mesh\n", "bad.toml:1");
+  const CommandResult missing = run_mtcut("run " + quoted(path("nothing.toml")));
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("nothing.toml: no such file"), std::string::npos) << missing.err;
+}
+
+TEST_F(RunCommand, LineNumbersPointAtTheFault) {
+  const std::string text = variant("frames = 180", "frames = 0");
+  // The line that holds "frames = 0".
+  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(text.find("frames = 0")), '\n');
+  expect_rejected(text, "bad.toml:" + std::to_string(line) + ": 'run.frames' must be at least 1");
+}
+
+}  // namespace
+}  // namespace mtcut::test
