@@ -1,6 +1,6 @@
 // mtcut: the command line. Each subcommand lives in its own file and
-// registers itself here; errors a user can cause end as one line on stderr
-// and exit code 1.
+// registers itself here; errors a user can cause in an input end as one line
+// on stderr and exit code 1; command-line usage errors exit 2.
 
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; usage errors exit 2, like most tools.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const mtcut::engine::InputError& e) {
     std::cerr << "mtcut: " << e.what() << "\n";
     return 1;
