@@ -134,8 +134,17 @@ int Stepper::substep_implicit(const SpringModel& model, const Environment& env, 
   }
 
   // Preconditioned CG on A dv = b, warm-started from the previous dv.
-  double b_norm2 = 0;
-  for (std::size_t i = 0; i < n; ++i) b_norm2 += r_[i].squaredNorm();
+  // The scale the residual is measured against: the right-hand side, but
+  // never less than the impulse of the body's weight over the step (near
+  // equilibrium b tends to 0 and a purely relative test would chase
+  // round-off; a force error below tol * weight is invisible).
+  double b_norm2 = 0, weight_impulse2 = 0;
+  const double gh2 = (h * env.gravity).squaredNorm();
+  for (std::size_t i = 0; i < n; ++i) {
+    b_norm2 += r_[i].squaredNorm();
+    if (model.inv_mass[i] != 0) weight_impulse2 += model.mass[i] * model.mass[i] * gh2;
+  }
+  const double scale2 = std::max(b_norm2, weight_impulse2);
   multiply_system(model, dv_, ap_);
   double rz = 0, rr = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -145,7 +154,7 @@ int Stepper::substep_implicit(const SpringModel& model, const Environment& env, 
     rz += r_[i].dot(z_[i]);
     rr += r_[i].squaredNorm();
   }
-  const double tolerance2 = def.cg_tolerance * def.cg_tolerance * b_norm2;
+  const double tolerance2 = def.cg_tolerance * def.cg_tolerance * scale2;
   int iterations = 0;
   while (rr > tolerance2 && iterations < def.cg_max_iterations) {
     const double pap = multiply_system(model, p_, ap_);
@@ -165,7 +174,7 @@ int Stepper::substep_implicit(const SpringModel& model, const Environment& env, 
     for (std::size_t i = 0; i < n; ++i) p_[i] = z_[i] + beta * p_[i];
     ++iterations;
   }
-  residual = b_norm2 > 0 ? std::sqrt(rr / b_norm2) : 0.0;
+  residual = scale2 > 0 ? std::sqrt(rr / scale2) : 0.0;
 
   for (std::size_t i = 0; i < n; ++i) {
     state.v[i] += dv_[i];

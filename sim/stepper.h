@@ -30,9 +30,10 @@ enum class IntegratorKind { kSymplecticEuler, kImplicitEuler };
 struct IntegratorDef {
   IntegratorKind kind = IntegratorKind::kImplicitEuler;
   int substeps = 1;              // each step is split in this many equal sub-steps
-  // CG stops when the preconditioned residual falls below this fraction of
-  // the right-hand side's (interactive accuracy: the error left is an
-  // A-norm-minimal velocity correction, it damps rather than destabilises).
+  // CG stops when the residual falls below this fraction of the larger of
+  // the right-hand side and the particles' weight impulse over the step
+  // (interactive accuracy: the error left is an A-norm-minimal velocity
+  // correction; it damps rather than destabilises).
   double cg_tolerance = 1e-3;
   int cg_max_iterations = 100;
   double max_speed = 100.0;      // m/s; a faster particle means the state exploded
@@ -41,7 +42,7 @@ struct IntegratorDef {
 struct StepReport {
   bool accepted = true;     // false: NaN or explosion, state restored
   int cg_iterations = 0;    // summed over sub-steps (implicit only)
-  double cg_residual = 0;   // relative, of the last sub-step
+  double cg_residual = 0;   // relative to the stopping scale, last sub-step
 };
 
 class Stepper {
