@@ -33,7 +33,11 @@ TEST_P(BuiltinShapes, VolumeAndCountMatchTheTarget) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllShapes, BuiltinShapes,
-                         ::testing::Values(BuiltinShape::kBox, BuiltinShape::kEllipsoid, BuiltinShape::kCylinder));
+                         ::testing::Values(BuiltinShape::kBox, BuiltinShape::kEllipsoid, BuiltinShape::kCylinder),
+                         [](const auto& info) {
+                           const char* names[] = {"Box", "Ellipsoid", "Cylinder"};
+                           return std::string(names[static_cast<int>(info.param)]);
+                         });
 
 TEST(BuiltinShapesParse, NamesAndErrors) {
   EXPECT_EQ(parse_builtin("builtin:box"), BuiltinShape::kBox);

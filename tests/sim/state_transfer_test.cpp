@@ -109,7 +109,8 @@ TEST_P(TransferOnMeshes, RandomLodStepsConserveMassAndMomentumAndCarryAffineFiel
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, TransferOnMeshes,
-                         ::testing::Values(std::string("builtin:ellipsoid"), test::shared_mesh("liver.msh")));
+                         ::testing::Values(std::string("builtin:ellipsoid"), test::shared_mesh("liver.msh")),
+                         [](const auto& info) { return std::string(info.index == 0 ? "Ellipsoid" : "LiverMsh"); });
 
 TEST(StateTransfer, CutVerticesComeFromTheirParents) {
   engine::MeshLoadDef load;

@@ -122,7 +122,10 @@ TEST_P(BothIntegrators, EnergyDecaysWithDamping) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Stepper, BothIntegrators,
-                         ::testing::Values(IntegratorKind::kSymplecticEuler, IntegratorKind::kImplicitEuler));
+                         ::testing::Values(IntegratorKind::kSymplecticEuler, IntegratorKind::kImplicitEuler),
+                         [](const auto& info) {
+                           return std::string(info.param == IntegratorKind::kSymplecticEuler ? "Symplectic" : "Implicit");
+                         });
 
 // The static elongation of a bar hanging from its top face, simulated on
 // `tets` (one frontier of the bar's MT).
