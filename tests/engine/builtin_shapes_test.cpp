@@ -32,12 +32,18 @@ TEST_P(BuiltinShapes, VolumeAndCountMatchTheTarget) {
   }
 }
 
+std::string shape_name(const ::testing::TestParamInfo<BuiltinShape>& param) {
+  switch (param.param) {
+    case BuiltinShape::kBox: return "Box";
+    case BuiltinShape::kEllipsoid: return "Ellipsoid";
+    case BuiltinShape::kCylinder: return "Cylinder";
+  }
+  return "Unknown";
+}
+
 INSTANTIATE_TEST_SUITE_P(AllShapes, BuiltinShapes,
                          ::testing::Values(BuiltinShape::kBox, BuiltinShape::kEllipsoid, BuiltinShape::kCylinder),
-                         [](const auto& info) {
-                           const char* names[] = {"Box", "Ellipsoid", "Cylinder"};
-                           return std::string(names[static_cast<int>(info.param)]);
-                         });
+                         shape_name);
 
 TEST(BuiltinShapesParse, NamesAndErrors) {
   EXPECT_EQ(parse_builtin("builtin:box"), BuiltinShape::kBox);
