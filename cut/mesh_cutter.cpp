@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 
 #include "cut/tet_splitter.h"
+#include "cut/vertex_unpinch.h"
 #include "engine/tet_adjacency.h"
 #include "engine/tet_geometry.h"
 
@@ -76,7 +78,6 @@ MeshCutResult cut_mesh(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
 
   ClassifierDef cdef;
   cdef.snap = def.snap;
-  CutClassifier cls(polygon, mesh.positions, cdef);
   std::vector<std::uint32_t> candidates;
   std::vector<std::uint8_t> is_candidate(n_tets, 0);
   for (std::size_t t = 0; t < n_tets; ++t) {
@@ -87,12 +88,36 @@ MeshCutResult cut_mesh(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
       hi = hi.cwiseMax(mesh.position(tet[i]));
     }
     if ((lo.array() > box_max.array()).any() || (hi.array() < box_min.array()).any()) continue;
-    if (!cls.add_candidate(tet)) continue;
     candidates.push_back(static_cast<std::uint32_t>(t));
-    is_candidate[t] = 1;
   }
   const auto split_start = Clock::now();
-  cls.finalize();
+  // Classify; where splitting the vertices on the cut would pinch the mesh,
+  // veto their snapping and classify again (vetoes only grow).
+  std::vector<VertId> vetoes;
+  std::unique_ptr<CutClassifier> classifier;
+  for (int round = 0;; ++round) {
+    classifier = std::make_unique<CutClassifier>(polygon, mesh.positions, cdef);
+    for (VertId v : vetoes) classifier->veto(v);
+    for (std::uint32_t t : candidates) classifier->add_candidate(mesh.tets[t]);
+    classifier->finalize();
+    const std::vector<VertId> pinching = find_pinching_vertices(mesh, *classifier);
+    if (pinching.empty() || round == 8) break;
+    vetoes.insert(vetoes.end(), pinching.begin(), pinching.end());
+    stats.vetoed_vertices += pinching.size();
+  }
+  CutClassifier& cls = *classifier;
+  {
+    std::size_t kept = 0;
+    for (std::uint32_t t : candidates) {
+      const Tet& tet = mesh.tets[t];
+      bool one_side = true;
+      for (int i = 1; i < 4; ++i) one_side &= cls.state(tet[i]) == cls.state(tet[0]) && is_strict(cls.state(tet[0]));
+      if (one_side) continue;
+      candidates[kept++] = t;
+      is_candidate[t] = 1;
+    }
+    candidates.resize(kept);
+  }
   stats.candidate_tets = candidates.size();
 
   std::vector<std::uint8_t> split_vertex(mesh.num_vertices(), 0);
@@ -103,6 +128,7 @@ MeshCutResult cut_mesh(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
   stats.snapped_vertices = result.snapped_vertices.size();
 
   VertexFactory factory(mesh.num_vertices());
+  std::vector<double> parent_quality;  // (split tets) smallest dihedral angle
   std::vector<Tet> made;
   std::vector<std::uint32_t> made_first;
   auto relabel = [&](std::size_t t) {
@@ -135,6 +161,8 @@ MeshCutResult cut_mesh(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
       continue;
     }
     made_first.push_back(static_cast<std::uint32_t>(made.size()));
+    const auto corners = mesh.corners(TetId(static_cast<std::size_t>(t)));
+    parent_quality.push_back(engine::min_dihedral_deg(corners[0], corners[1], corners[2], corners[3]));
     const CutCase kind = split_tet(tet, config, cls, recipes, factory, made);
     ++stats.per_case[static_cast<std::size_t>(kind)];
     result.split_tets.push_back(TetId(static_cast<std::size_t>(t)));
@@ -160,19 +188,31 @@ MeshCutResult cut_mesh(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
     }
     result.split_first.push_back(static_cast<std::uint32_t>(result.replacements.size()));
   }
+  result.new_vertices = factory.made();
+
+  // Vertices the cut went through: their stars must not be pinched.
+  std::vector<VertId> through;
+  for (VertId v : cls.on_vertices()) through.push_back(v);
+  for (const NewVertex& v : result.new_vertices)
+    if (v.key.kind == PointKind::kVertexCopy) through.push_back(v.id);
+  stats.unpinched_vertices = unpinch_vertices(mesh, through, result.new_vertices, result.relabeled_tets);
   stats.split_seconds = seconds_since(split_start);
 
   stats.split_tets = result.split_tets.size();
   stats.new_tets = made.size();
   stats.relabeled_tets = result.relabeled_tets.size();
-  result.new_vertices = factory.made();
   stats.new_vertices = result.new_vertices.size();
   stats.split_vertices = static_cast<std::size_t>(std::count_if(
       result.new_vertices.begin(), result.new_vertices.end(),
       [](const NewVertex& v) { return v.key.kind == PointKind::kVertexCopy; }));
-  for (TetId id : result.replacements) {
-    const auto c = mesh.corners(id);
-    stats.min_dihedral_deg = std::min(stats.min_dihedral_deg, engine::min_dihedral_deg(c[0], c[1], c[2], c[3]));
+  for (std::size_t i = 0; i < result.split_tets.size(); ++i) {
+    double worst = 180;
+    for (std::uint32_t j = result.split_first[i]; j < result.split_first[i + 1]; ++j) {
+      const auto c = mesh.corners(result.replacements[j]);
+      worst = std::min(worst, engine::min_dihedral_deg(c[0], c[1], c[2], c[3]));
+    }
+    stats.min_dihedral_deg = std::min(stats.min_dihedral_deg, worst);
+    if (parent_quality[i] > 0) stats.min_dihedral_ratio = std::min(stats.min_dihedral_ratio, worst / parent_quality[i]);
   }
   if (def.count_pieces) stats.pieces = count_pieces(mesh);
   stats.seconds = seconds_since(start);

@@ -38,9 +38,12 @@ struct CutStats {
   std::size_t new_vertices = 0;
   std::size_t split_vertices = 0;    // vertices the cut passes through (a copy was made)
   std::size_t snapped_vertices = 0;  // vertices the cut was moved onto
+  std::size_t vetoed_vertices = 0;   // kept off the cut to avoid pinching (vertex_unpinch.h)
+  std::size_t unpinched_vertices = 0;  // extra copies where a star fell apart (vertex_unpinch.h)
   std::array<std::size_t, kCaseCount> per_case{};  // split tets per CutCase
   std::size_t pieces = 0;            // connected components after the cut (0: not counted)
   double min_dihedral_deg = 180;     // smallest dihedral angle of the new tets (180: none)
+  double min_dihedral_ratio = 1;     // smallest (new tet's angle / its parent's smallest angle), capped at 1
   double seconds = 0;                // wall time of the whole cut
   double split_seconds = 0;          // of which classifying and splitting the candidates
 
@@ -55,7 +58,7 @@ struct MeshCutResult {
   std::vector<TetId> split_tets;           // (n_split) ids of the tets replaced
   std::vector<std::uint32_t> split_first;  // (n_split + 1) offsets into `replacements`
   std::vector<TetId> replacements;         // the tets replacing them; the old id comes first
-  std::vector<TetId> relabeled_tets;       // tets given the copy of a split vertex
+  std::vector<TetId> relabeled_tets;       // tets given a vertex copy (may repeat)
   std::vector<NewVertex> new_vertices;     // in id order, from the old vertex count on
   std::vector<VertId> snapped_vertices;    // vertices the cut was moved onto (split or not)
 };

@@ -31,7 +31,7 @@ std::array<Tri, 4> outward_faces(const Tet4& t) {
 }
 
 double volume(const LabelPositions& p, const Tet4& t) {
-  return engine::signed_volume(p[t[0]], p[t[1]], p[t[2]], p[t[3]]);
+  return volume6(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) / 6.0;
 }
 
 // A canonical oriented triangle packed in one word.
@@ -58,10 +58,10 @@ class Filler {
             Tet4 t = {points[a], points[b], points[c], points[d]};
             if (volume(realisations.front(), t) < 0) std::swap(t[2], t[3]);
             const bool positive = std::all_of(realisations.begin(), realisations.end(), [&](const LabelPositions& p) {
-              const double scale = engine::signed_volume(p[0], p[make_label(LabelKind::kVertex, 1)],
+              const double scale = volume6(p[0], p[make_label(LabelKind::kVertex, 1)],
                                                          p[make_label(LabelKind::kVertex, 2)],
                                                          p[make_label(LabelKind::kVertex, 3)]);
-              return volume(p, t) > 1e-9 * std::abs(scale);
+              return volume(p, t) > 1e-14 * std::abs(scale);
             });
             if (!positive) continue;
             Candidate cand{t, {}, {}, volume(realisations.front(), t)};

@@ -36,7 +36,7 @@ class LutSplitter {
   explicit LutSplitter(const TetConfig& config)
       : c_(config),
         tr_(trace_cut(config)),
-        bends_(std::any_of(config.vertex.begin(), config.vertex.end(), is_on)) {}
+        bends_(config.bent || std::any_of(config.vertex.begin(), config.vertex.end(), is_on)) {}
 
   SplitRecipe run() {
     SplitRecipe recipe;
@@ -50,6 +50,12 @@ class LutSplitter {
         best = std::move(cone);
         centre = false;
       }
+    }
+    if (!best) {
+      // Last resort, always valid: a cone from the centre of the cut surface
+      // over the whole boundary (the 1:17 reference's construction).
+      best = by_centre_cone();
+      centre = true;
     }
     if (!best) throw std::logic_error("generate_lut_split: no decomposition for configuration " + std::to_string(c_.key()));
     recipe.tets = std::move(*best);
@@ -66,7 +72,7 @@ class LutSplitter {
     if (where_.empty()) {
       where_.push_back(reference_positions(c_, tr_));
       std::mt19937_64 rng(0x5eed);
-      for (int i = 0; i < 16; ++i) where_.push_back(random_positions(c_, tr_, rng, !bends_ || i % 2 == 0));
+      for (int i = 0; i < (bends_ ? 32 : 12); ++i) where_.push_back(random_positions(c_, tr_, rng, !bends_ || i % 3 == 0));
     }
     return where_;
   }
@@ -75,13 +81,13 @@ class LutSplitter {
   bool holds(std::vector<Tet4>& tets) {
     const LabelPositions& ref = where().front();
     for (Tet4& t : tets)
-      if (engine::signed_volume(ref[t[0]], ref[t[1]], ref[t[2]], ref[t[3]]) < 0) std::swap(t[2], t[3]);
+      if (volume6(ref[t[0]], ref[t[1]], ref[t[2]], ref[t[3]]) < 0) std::swap(t[2], t[3]);
     if (!bends_) return true;
     for (const LabelPositions& p : where()) {
       auto corner = [&](int i) { return p[make_label(LabelKind::kVertex, i)]; };
-      const double whole = engine::signed_volume(corner(0), corner(1), corner(2), corner(3));
+      const double whole = volume6(corner(0), corner(1), corner(2), corner(3));
       for (const Tet4& t : tets)
-        if (!(engine::signed_volume(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) > 1e-9 * whole)) return false;
+        if (!(volume6(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) > 1e-14 * whole)) return false;
     }
     return true;
   }
@@ -274,6 +280,18 @@ class LutSplitter {
       if (holds(tets)) best = std::move(tets);
     }
     return best;
+  }
+
+  // A cone from the centre over every boundary triangle; the centre is split
+  // when nothing joins the sides inside the tet (the cut ends at it otherwise).
+  std::optional<std::vector<Tet4>> by_centre_cone() {
+    bool split = true;
+    for (const SectionPoint& p : tr_.section) split &= p.active || p.is_vertex;
+    std::vector<Tet4> tets;
+    for (const TraceTriangle& t : tr_.triangles)
+      tets.push_back({make_label(LabelKind::kCentre, 0, split ? t.side : LabelSide::kNone), t.v[0], t.v[1], t.v[2]});
+    if (!holds(tets)) return std::nullopt;
+    return tets;
   }
 
   const TetConfig& c_;

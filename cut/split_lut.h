@@ -24,7 +24,12 @@
 //      surface between two face points). So the cut surface gets a centre
 //      point (split in two, one per side) and each piece is filled by a small
 //      exhaustive search (piece_filler.h) keeping only tets whose orientation
-//      holds wherever the cut points sit: O 2 + 8 + 8 = 18.
+//      holds wherever the cut points sit: O 2 + 8 + 8 = 18;
+//   6. when the cut surface may leave the plane (a vertex snapped onto the
+//      cut or kept off it, TetConfig::bent) both sides must triangulate it
+//      alike, every tet must hold for cut points anywhere on their edges and
+//      faces, and where nothing else does, the 1:17 reference's cone from the
+//      centre of the cut is used (always valid; the cut ends at the centre).
 // Among valid cones the one making fewest tets wins, so the counts are
 // DESIGN.md's minima: A 4, B 6, C 6, D 8, E 9 (O 18, above the bound of 12). The result is cached per
 // configuration by SplitTable, which also orients the tets.

@@ -88,14 +88,21 @@ LabelPositions random_positions(const TetConfig& c, const CutTrace& tr, std::mt1
     ch.distance[i] = c.vertex[i] == VertexState::kNeg ? -(0.05 + u(rng))
                      : c.vertex[i] == VertexState::kPos ? 0.05 + u(rng)
                                                         : 0.0;
+  // Parameters anywhere in (0, 1), often near its ends, where a tet whose
+  // orientation depends on them flips.
+  auto parameter = [&] {
+    const double r = u(rng);
+    return r < 0.25 ? 0.001 * u(rng) + 1e-4 : r < 0.5 ? 1 - 1e-4 - 0.001 * u(rng) : 0.02 + 0.96 * u(rng);
+  };
   if (planar) {
-    ch.face_parameter = [&] { return 0.02 + 0.96 * u(rng); };
+    // Face points sit at least face_clamp (>= 0.05) from their segment's ends.
+    ch.face_parameter = [&] { return 0.05 + 0.9 * u(rng); };
   } else {
-    ch.edge_parameter = [&] { return 0.02 + 0.96 * u(rng); };
+    ch.edge_parameter = parameter;
     ch.face_weights = [&] {
       std::array<double, 3> w;
       double sum = 0;
-      for (double& x : w) sum += x = 0.02 + u(rng);
+      for (double& x : w) sum += x = parameter();
       for (double& x : w) x /= sum;
       return w;
     };

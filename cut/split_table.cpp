@@ -15,7 +15,7 @@ namespace {
 using engine::kTetEdges;
 using engine::Vec3;
 
-constexpr std::size_t kKeyCount = std::size_t{1} << 19;
+constexpr std::size_t kKeyCount = std::size_t{1} << 20;
 
 
 std::string describe(const TetConfig& c) {

@@ -44,7 +44,7 @@ class SplitTable {
 
  private:
   SplitScheme scheme_;
-  std::vector<std::int32_t> index_;  // (2^19) key -> recipe, -1 = not generated yet
+  std::vector<std::int32_t> index_;  // (2^20) key -> recipe, -1 = not generated yet
   std::vector<SplitRecipe> recipes_;
 };
 

@@ -58,6 +58,8 @@ std::uint32_t TetConfig::key() const {
     code = code * (4 - i) + smaller;
   }
   key |= static_cast<std::uint32_t>(code) << 14;
+  const bool on = std::any_of(vertex.begin(), vertex.end(), is_on);
+  if (bent && !on) key |= 1u << 19;
   return key;
 }
 
@@ -104,16 +106,34 @@ std::int8_t CutClassifier::raw_side(VertId v) const {
   return info.raw;
 }
 
+std::int8_t CutClassifier::side_for_crossings(VertId v) const {
+  const std::int8_t raw = raw_side(v);
+  return raw == 0 && info_[v.index()].vetoed ? 1 : raw;  // a vetoed vertex on the plane counts as positive
+}
+
+double CutClassifier::raw_parameter(VertId a, VertId b) const {
+  const VertId lo = a < b ? a : b, hi = a < b ? b : a;
+  const double d_lo = polygon_.signed_distance(positions_[lo.index()]);
+  const double d_hi = polygon_.signed_distance(positions_[hi.index()]);
+  const double t = d_lo - d_hi != 0 ? d_lo / (d_lo - d_hi) : 0.5;
+  return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.5;
+}
+
+void CutClassifier::veto(VertId v) {
+  assert(touched_.empty());
+  info_[v.index()].vetoed = true;
+}
+
 bool CutClassifier::add_candidate(const Tet& tet) {
   assert(!finalized_);
   std::array<std::int8_t, 4> s;
-  for (int i = 0; i < 4; ++i) s[i] = raw_side(tet[i]);
+  for (int i = 0; i < 4; ++i) s[i] = side_for_crossings(tet[i]);
   if (s[0] != 0 && s[0] == s[1] && s[1] == s[2] && s[2] == s[3]) return false;
 
   for (int i = 0; i < 4; ++i) {
     VertexInfo& info = info_[tet[i].index()];
     if (info.reach == 0) touched_.push_back(tet[i]);
-    if (s[i] == 0) info.on = true;
+    if (s[i] == 0) info.on = true;  // vetoed vertices on the plane count as positive (s = 1)
   }
   for (int k = 0; k < 6; ++k) {
     const VertId a = tet[kTetEdges[k][0]], b = tet[kTetEdges[k][1]];
@@ -126,18 +146,11 @@ bool CutClassifier::add_candidate(const Tet& tet) {
     }
     if (s[kTetEdges[k][0]] * s[kTetEdges[k][1]] >= 0) continue;
     auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
-    if (fresh) {
-      const VertId lo = a < b ? a : b, hi = a < b ? b : a;
-      const double d_lo = polygon_.signed_distance(positions_[lo.index()]);
-      const double d_hi = polygon_.signed_distance(positions_[hi.index()]);
-      double t = d_lo - d_hi != 0 ? d_lo / (d_lo - d_hi) : 0.5;
-      if (!std::isfinite(t)) t = 0.5;
-      it->second.t = std::clamp(t, 0.0, 1.0);
-    }
+    if (fresh) it->second.t = raw_parameter(a, b);
     const double t = it->second.t;
     const VertId lo = a < b ? a : b, hi = a < b ? b : a;
-    if (t < snap_) info_[lo.index()].on = true;
-    if (t > 1 - snap_) info_[hi.index()].on = true;
+    if (t < snap_ && !info_[lo.index()].vetoed) info_[lo.index()].on = true;
+    if (t > 1 - snap_ && !info_[hi.index()].vetoed) info_[hi.index()].on = true;
   }
   return true;
 }
@@ -150,14 +163,22 @@ void CutClassifier::finalize() {
     if (!info.on) continue;
     const Vec3& p = positions_[v.index()];
     info.active = polygon_.projects_inside(p) >= 0 || polygon_.distance_outside(p) <= snap_ * info.reach;
+    if (!info.active) {
+      // On the plane but off the polygon: not split; it stays on its side
+      // (positive when exactly on the plane) and cut points keep off it.
+      info.on = false;
+      info.vetoed = true;
+      continue;
+    }
     on_vertices_.push_back(v);
   }
 }
 
 VertexState CutClassifier::state(VertId v) const {
   const VertexInfo& info = info_[v.index()];
-  if (finalized_ && info.on) return info.active ? VertexState::kOnActive : VertexState::kOnInactive;
-  // Exactly on the plane but never part of a candidate: far from the cut.
+  if (finalized_ && info.on) return VertexState::kOnActive;
+  // Exactly on the plane but kept off the cut, or never part of a candidate
+  // (far from the cut): positive.
   return raw_side(v) < 0 ? VertexState::kNeg : VertexState::kPos;
 }
 
@@ -166,15 +187,22 @@ bool CutClassifier::snapped(VertId v) const {
   return info.on && info.raw != 0;
 }
 
+bool CutClassifier::vetoed(VertId v) const { return info_[v.index()].vetoed; }
+
 double CutClassifier::crossing_parameter(VertId a, VertId b) const {
-  const auto it = edges_.find(edge_key(a, b));
-  if (it == edges_.end()) throw std::logic_error("crossing_parameter: the edge was not seen by add_candidate");
-  return it->second.t;
+  auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
+  if (fresh) it->second.t = raw_parameter(a, b);  // an edge at a vertex kept off the plane
+  // A vertex kept off the cut keeps the cut point `snap` away from itself.
+  const VertId lo = a < b ? a : b, hi = a < b ? b : a;
+  double t = it->second.t;
+  if (info_[lo.index()].vetoed) t = std::max(t, snap_);
+  if (info_[hi.index()].vetoed) t = std::min(t, 1 - snap_);
+  return t;
 }
 
 bool CutClassifier::crossing_covered(VertId a, VertId b) const {
-  const auto it = edges_.find(edge_key(a, b));
-  if (it == edges_.end()) throw std::logic_error("crossing_covered: the edge was not seen by add_candidate");
+  auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
+  if (fresh) it->second.t = raw_parameter(a, b);
   if (it->second.covered < 0) {
     const VertId lo = a < b ? a : b, hi = a < b ? b : a;
     it->second.covered = polygon_.line_crossing(positions_[lo.index()], positions_[hi.index()]) > 0 ? 1 : 0;
@@ -186,6 +214,7 @@ TetConfig CutClassifier::configure(const Tet& tet) const {
   TetConfig config;
   for (int i = 0; i < 4; ++i) {
     config.vertex[i] = state(tet[i]);
+    config.bent |= is_on(config.vertex[i]) || info_[tet[i].index()].vetoed;
     int rank = 0;
     for (int j = 0; j < 4; ++j) rank += tet[j] < tet[i];
     config.rank[i] = static_cast<std::uint8_t>(rank);

@@ -17,13 +17,17 @@
 //   kOnActive      on the cut and inside the polygon (or within the snap
 //                  margin of it): the cut passes through the vertex, which is
 //                  split in two (the positive side keeps the id);
-//   kOnInactive    on the plane but outside the polygon: the cut may end at
-//                  it (a contour point), it is never split.
+//   kOnInactive    on the plane, not split, the cut ending at it: supported
+//                  by the split rules, never produced by this classifier,
+//                  which keeps such vertices off the cut instead (below).
 // A vertex is "on" when it is exactly on the plane, or when a straddling edge
 // of a candidate tet meets the plane within `snap` (a fraction of the edge)
-// of it. The vertex is not moved: the cut surface bends through it. Hence
-// every cut point left on an edge lies in [snap, 1 - snap] of it, and no
-// sliver is made (DESIGN.md, "Degenerate contacts").
+// of it, and it projects into the polygon grown by `snap` times its longest
+// edge. The vertex is not moved: the cut surface bends through it. A vertex
+// that would be on but lies off the polygon (or is vetoed) is kept off the
+// cut: it keeps its side (positive when exactly on the plane) and cut points
+// stay `snap` away from it. Hence every cut point lies in [snap, 1 - snap]
+// of its edge, and no sliver is made (DESIGN.md, "Degenerate contacts").
 
 #include <array>
 #include <cstdint>
@@ -54,13 +58,18 @@ struct TetConfig {
   std::array<VertexState, 4> vertex{};
   std::uint8_t covered = 0;     // bit k: local edge k (kTetEdges) straddles and crosses inside the polygon
   std::array<std::uint8_t, 4> rank{0, 1, 2, 3};  // rank of each local vertex's global id (0 = lowest)
+  // The cut surface may leave the plane: a vertex is on the cut (snapped,
+  // not moved) or kept off it (cut points moved away). Then both sides must
+  // triangulate it the same way.
+  bool bent = false;
 
   bool straddles(int edge) const;
   bool edge_active(int edge) const { return straddles(edge) && (covered >> edge & 1); }
   // Split needed: an edge crossed inside the polygon, or the cut passing
   // through a vertex into a tet that has vertices on both sides.
   bool is_cut() const;
-  // 8 bits of states, 6 of coverage (straddling edges only), 5 of id order.
+  // 8 bits of states, 6 of coverage (straddling edges only), 5 of id order,
+  // 1 for a bent cut surface (implied by a vertex on the cut).
   std::uint32_t key() const;
   CutCase cut_case() const;
 };
@@ -76,6 +85,12 @@ class CutClassifier {
   // outlive the classifier and not change while it is used.
   CutClassifier(const CutPolygon& polygon, std::span<const engine::Vec3> positions, const ClassifierDef& def = {});
 
+  // Phase 0 (optional): `v` must not be snapped onto the cut: cut points near
+  // it stay `snap` away from it instead, and if it lies exactly on the plane
+  // it counts as positive. The cutter vetoes vertices whose split would pinch
+  // the mesh (two parts of one side touching along an edge).
+  void veto(VertId v);
+
   // Phase 1. Declares a tet that may be cut; returns false (and forgets it)
   // when all its vertices are strictly on one side of the plane.
   bool add_candidate(const Tet& tet);
@@ -84,6 +99,7 @@ class CutClassifier {
 
   VertexState state(VertId v) const;
   bool snapped(VertId v) const;                   // "on" only because of snapping
+  bool vetoed(VertId v) const;
   const std::vector<VertId>& on_vertices() const { return on_vertices_; }  // after finalize
 
   // Crossing of the edge (a, b): parameter from the lower id, and whether the
@@ -119,14 +135,17 @@ class CutClassifier {
     std::int8_t raw = 2;       // exact side, 2 = not computed
     bool on = false;           // exactly on the plane, or snapped
     bool active = false;
+    bool vetoed = false;       // kept off the cut
     double reach = 0;          // longest candidate edge at the vertex
   };
   struct EdgeInfo {
     double t = 0;              // from the lower id
-    mutable std::int8_t covered = -1;  // -1 not computed yet
+    std::int8_t covered = -1;  // -1 not computed yet
   };
   static std::uint64_t edge_key(VertId a, VertId b);
   std::int8_t raw_side(VertId v) const;
+  std::int8_t side_for_crossings(VertId v) const;
+  double raw_parameter(VertId a, VertId b) const;
   // The two ends of the face's section segment (point, weights on `face`,
   // active), or false when the face is not crossed by the plane.
   struct SectionEnd {
@@ -142,7 +161,7 @@ class CutClassifier {
   double face_clamp_;
   bool finalized_ = false;
   mutable std::vector<VertexInfo> info_;  // (n_vertices)
-  std::unordered_map<std::uint64_t, EdgeInfo> edges_;
+  mutable std::unordered_map<std::uint64_t, EdgeInfo> edges_;
   std::vector<VertId> touched_;            // vertices of candidates
   std::vector<VertId> on_vertices_;
 };

@@ -61,29 +61,90 @@ SurfaceMesh box_surface(const Vec3& size) {
   return s;
 }
 
+// Joins two concentric loops of vertex ids (angles ascending from 0, each
+// closed) by triangles, advancing on whichever loop's next vertex comes first
+// in angle; a one-point inner loop (the centre) becomes a fan. `flip`
+// reverses the winding (the bottom cap faces down).
+void zip_loops(const std::vector<std::int32_t>& inner, const std::vector<double>& inner_angle,
+               const std::vector<std::int32_t>& outer, const std::vector<double>& outer_angle, bool flip,
+               SurfaceMesh& s) {
+  auto add = [&](std::int32_t p, std::int32_t q, std::int32_t r) {
+    s.triangles.push_back(flip ? std::array<std::int32_t, 3>{p, r, q} : std::array<std::int32_t, 3>{p, q, r});
+  };
+  const std::size_t ni = inner.size(), no = outer.size();
+  if (ni == 1) {
+    for (std::size_t b = 0; b < no; ++b) add(inner[0], outer[b], outer[(b + 1) % no]);
+    return;
+  }
+  // The angle of the k-th vertex after the start, unwrapped past 2 pi.
+  auto angle = [](const std::vector<double>& angles, std::size_t k) {
+    return k < angles.size() ? angles[k] : angles[k - angles.size()] + 2 * kPi;
+  };
+  std::size_t a = 0, b = 0;
+  while (a < ni || b < no) {
+    const bool advance_inner = b == no || (a < ni && angle(inner_angle, a + 1) < angle(outer_angle, b + 1));
+    if (advance_inner) {
+      add(inner[a % ni], outer[b % no], inner[(a + 1) % ni]);
+      ++a;
+    } else {
+      add(inner[a % ni], outer[b % no], outer[(b + 1) % no]);
+      ++b;
+    }
+  }
+}
+
 SurfaceMesh cylinder_surface(const Vec3& size, double edge) {
   const double rx = size.x() / 2, ry = size.y() / 2, hz = size.z() / 2;
   const double perimeter = 2 * kPi * std::max(rx, ry);
   const int segments = std::max(12, static_cast<int>(std::ceil(perimeter / edge)));
   const int rings = std::max(1, static_cast<int>(std::ceil(size.z() / edge)));
+  const int cap_rings = std::max(1, static_cast<int>(std::ceil(std::max(rx, ry) / edge)));
   SurfaceMesh s;
-  for (int r = 0; r <= rings; ++r)
-    for (int k = 0; k < segments; ++k) {
-      const double a = 2 * kPi * k / segments;
-      s.positions.emplace_back(rx * std::cos(a), ry * std::sin(a), -hz + size.z() * r / rings);
+  // One loop of n points at fraction `radial` of the radii, height z.
+  auto add_loop = [&](int n, double radial, double z, std::vector<std::int32_t>& ids, std::vector<double>& angles) {
+    ids.clear();
+    angles.clear();
+    for (int k = 0; k < n; ++k) {
+      const double a = 2 * kPi * k / n;
+      ids.push_back(static_cast<std::int32_t>(s.positions.size()));
+      angles.push_back(a);
+      s.positions.emplace_back(radial * rx * std::cos(a), radial * ry * std::sin(a), z);
     }
-  auto at = [&](int r, int k) { return r * segments + (k % segments); };
-  for (int r = 0; r < rings; ++r)
+  };
+  // The side: rings of `segments` points from bottom to top.
+  std::vector<std::vector<std::int32_t>> side(static_cast<std::size_t>(rings) + 1);
+  std::vector<double> side_angles;
+  for (int r = 0; r <= rings; ++r) add_loop(segments, 1.0, -hz + size.z() * r / rings, side[static_cast<std::size_t>(r)], side_angles);
+  for (int r = 0; r < rings; ++r) {
+    const auto& lo = side[static_cast<std::size_t>(r)];
+    const auto& hi = side[static_cast<std::size_t>(r) + 1];
     for (int k = 0; k < segments; ++k) {
-      s.triangles.push_back({at(r, k), at(r, k + 1), at(r + 1, k + 1)});
-      s.triangles.push_back({at(r, k), at(r + 1, k + 1), at(r + 1, k)});
+      const int k1 = (k + 1) % segments;
+      s.triangles.push_back({lo[k], lo[k1], hi[k1]});
+      s.triangles.push_back({lo[k], hi[k1], hi[k]});
     }
-  const int bottom = static_cast<int>(s.positions.size());
-  s.positions.emplace_back(0, 0, -hz);
-  s.positions.emplace_back(0, 0, hz);
-  for (int k = 0; k < segments; ++k) {
-    s.triangles.push_back({bottom, at(0, k + 1), at(0, k)});
-    s.triangles.push_back({bottom + 1, at(rings, k), at(rings, k + 1)});
+  }
+  // The caps: concentric loops with about as many points as their perimeter
+  // needs, zipped together; the centre is a single point.
+  for (const bool top : {false, true}) {
+    const double z = top ? hz : -hz;
+    std::vector<std::int32_t> inner = {static_cast<std::int32_t>(s.positions.size())};
+    std::vector<double> inner_angle = {0.0};
+    s.positions.emplace_back(0, 0, z);
+    for (int c = 1; c <= cap_rings; ++c) {
+      std::vector<std::int32_t> outer;
+      std::vector<double> outer_angle;
+      if (c == cap_rings) {
+        outer = side[top ? static_cast<std::size_t>(rings) : 0];
+        outer_angle = side_angles;
+      } else {
+        const int n = std::max(6, segments * c / cap_rings);
+        add_loop(n, static_cast<double>(c) / cap_rings, z, outer, outer_angle);
+      }
+      zip_loops(inner, inner_angle, outer, outer_angle, !top, s);
+      inner = std::move(outer);
+      inner_angle = std::move(outer_angle);
+    }
   }
   return s;
 }
@@ -148,18 +209,18 @@ SurfaceMesh make_builtin_surface(const BuiltinShapeDef& def) {
 TetMesh make_builtin_mesh(const BuiltinShapeDef& def, const TetrahedralizeOptions& quality) {
   const SurfaceMesh surface = make_builtin_surface(def);
   const double volume = analytic_volume(def);
-  // The count TetGen makes falls with the -a bound like a power law whose
-  // exponent depends on the shape and on how much the surface already forces
-  // (about -1 for a box, much flatter for a curved surface). Aim, measure,
-  // then re-aim by the secant in log-log space.
+  // The count TetGen makes falls as the -a bound grows, but not smoothly:
+  // the surface and the quality refinement both force tets. Aim at the
+  // proportional guess; once the target is bracketed, bisect the bound in
+  // log space. The mesh closest to the target wins.
   constexpr double kTolerance = 0.1;
-  constexpr int kAttempts = 6;
+  constexpr int kAttempts = 8;
   const double target = def.target_tets;
   TetrahedralizeOptions options = quality;
   options.max_volume = 1.2 * volume / target;
+  double too_small = 0, too_large = 0;  // bounds known to give too many / too few tets
   TetMesh best;
   double best_error = std::numeric_limits<double>::infinity();
-  double previous_bound = 0, previous_count = 0;
   for (int attempt = 0; attempt < kAttempts; ++attempt) {
     TetMesh mesh = tetrahedralize(surface, options, "builtin shape");
     const double count = static_cast<double>(mesh.num_tets());
@@ -169,12 +230,12 @@ TetMesh make_builtin_mesh(const BuiltinShapeDef& def, const TetrahedralizeOption
       best = std::move(mesh);
     }
     if (error < kTolerance) break;
-    double exponent = 1.0;  // count ~ bound^-exponent
-    if (previous_count > 0 && count != previous_count)
-      exponent = std::clamp(std::log(previous_count / count) / std::log(options.max_volume / previous_bound), 0.1, 2.0);
-    previous_bound = options.max_volume;
-    previous_count = count;
-    options.max_volume *= std::pow(count / target, 1.0 / exponent);
+    (count > target ? too_small : too_large) = options.max_volume;
+    if (too_small > 0 && too_large > 0) {
+      options.max_volume = std::sqrt(too_small * too_large);
+    } else {
+      options.max_volume *= count / target;
+    }
   }
   return best;
 }

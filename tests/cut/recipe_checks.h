@@ -50,10 +50,15 @@ inline std::vector<TetConfig> all_cut_configs(int orders = 24) {
       for (std::size_t j = 0; j < straddling.size(); ++j)
         if (mask >> j & 1) c.covered |= static_cast<std::uint8_t>(1u << straddling[j]);
       if (!c.is_cut()) continue;
-      for (int o = 0; o < (has_quad(c) ? orders : 1); ++o) {
-        c.rank = ranks[static_cast<std::size_t>(o * 24 / orders)];
-        out.push_back(c);
-      }
+      // A bent cut surface is implied by a vertex on the cut; without one it
+      // is its own variant (cut points moved off the plane).
+      const bool on = std::any_of(c.vertex.begin(), c.vertex.end(), is_on);
+      for (int bent = on ? 1 : 0; bent < 2; ++bent)
+        for (int o = 0; o < (has_quad(c) ? orders : 1); ++o) {
+          c.rank = ranks[static_cast<std::size_t>(o * 24 / orders)];
+          c.bent = bent == 1;
+          out.push_back(c);
+        }
     }
   }
   return out;

@@ -108,8 +108,13 @@ TEST_P(TransferOnMeshes, RandomLodStepsConserveMassAndMomentumAndCarryAffineFiel
   EXPECT_GT(interpolated, 0);  // refinements did bring vertices back
 }
 
+std::string mesh_name(const ::testing::TestParamInfo<std::string>& param) {
+  return param.index == 0 ? "Ellipsoid" : "LiverMsh";
+}
+
 INSTANTIATE_TEST_SUITE_P(Meshes, TransferOnMeshes,
-                         ::testing::Values(std::string("builtin:ellipsoid"), test::shared_mesh("liver.msh")));
+                         ::testing::Values(std::string("builtin:ellipsoid"), test::shared_mesh("liver.msh")),
+                         mesh_name);
 
 TEST(StateTransfer, CutVerticesComeFromTheirParents) {
   engine::MeshLoadDef load;

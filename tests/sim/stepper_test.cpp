@@ -121,8 +121,13 @@ TEST_P(BothIntegrators, EnergyDecaysWithDamping) {
   EXPECT_LT(total_energy(model, env, state), 0.5 * e0);
 }
 
+std::string integrator_name(const ::testing::TestParamInfo<IntegratorKind>& param) {
+  return param.param == IntegratorKind::kSymplecticEuler ? "Symplectic" : "Implicit";
+}
+
 INSTANTIATE_TEST_SUITE_P(Stepper, BothIntegrators,
-                         ::testing::Values(IntegratorKind::kSymplecticEuler, IntegratorKind::kImplicitEuler));
+                         ::testing::Values(IntegratorKind::kSymplecticEuler, IntegratorKind::kImplicitEuler),
+                         integrator_name);
 
 // The static elongation of a bar hanging from its top face, simulated on
 // `tets` (one frontier of the bar's MT).

@@ -1,0 +1,150 @@
+#include "cut/vertex_unpinch.h"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+namespace mtcut::cut {
+
+std::vector<VertId> find_pinching_vertices(const engine::TetMesh& mesh, const CutClassifier& cls) {
+  std::vector<std::uint8_t> split(mesh.num_vertices(), 0);
+  bool any = false;
+  for (VertId v : cls.on_vertices())
+    if (cls.state(v) == VertexState::kOnActive) split[v.index()] = 1, any = true;
+  if (!any) return {};
+  // Tets around each edge whose two ends are split.
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> around;
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    const engine::Tet& tet = mesh.tets[t];
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        if (split[tet[a].index()] && split[tet[b].index()]) {
+          const auto lo = static_cast<std::uint64_t>(std::min(tet[a], tet[b]).value);
+          const auto hi = static_cast<std::uint64_t>(std::max(tet[a], tet[b]).value);
+          around[lo << 32 | hi].push_back(static_cast<std::uint32_t>(t));
+        }
+  }
+  std::vector<VertId> out;
+  for (const auto& [key, tets] : around) {
+    const VertId a(static_cast<std::int32_t>(key >> 32)), b(static_cast<std::int32_t>(key & 0xffffffffu));
+    // Each tet reaches the negative and/or positive side near the edge; tets
+    // sharing a face (a, b, x) are neighbours around it.
+    std::vector<std::array<VertId, 2>> others;
+    std::vector<std::array<bool, 2>> reach;  // (negative, positive)
+    for (std::uint32_t t : tets) {
+      std::array<VertId, 2> o{};
+      int n = 0;
+      for (VertId v : mesh.tets[t])
+        if (v != a && v != b) o[n++] = v;
+      std::array<bool, 2> r = {false, false};
+      double lean = 0;
+      for (VertId v : o) {
+        const VertexState s = cls.state(v);
+        r[0] |= s == VertexState::kNeg;
+        r[1] |= s == VertexState::kPos;
+        lean += cls.polygon().signed_distance(cls.positions()[v.index()]);
+      }
+      if (!r[0] && !r[1]) r[lean < 0 ? 0 : 1] = true;
+      others.push_back(o);
+      reach.push_back(r);
+    }
+    for (int side = 0; side < 2; ++side) {
+      const VertexState state = side == 0 ? VertexState::kNeg : VertexState::kPos;
+      std::vector<std::size_t> parent(tets.size());
+      std::iota(parent.begin(), parent.end(), 0);
+      auto find = [&](std::size_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+      };
+      // Two tets around the edge share a face (a, b, x); it joins their parts
+      // on this side when x is on this side (a face with x on the cut is cut).
+      for (std::size_t i = 0; i < tets.size(); ++i)
+        for (std::size_t j = i + 1; j < tets.size(); ++j)
+          for (VertId x : others[i])
+            if ((x == others[j][0] || x == others[j][1]) && reach[i][side] && reach[j][side] && cls.state(x) == state)
+              parent[find(i)] = find(j);
+      std::size_t parts = 0;
+      for (std::size_t i = 0; i < tets.size(); ++i) parts += reach[i][side] && find(i) == i;
+      if (parts > 1) {
+        out.push_back(a);
+        out.push_back(b);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+std::size_t unpinch_vertices(engine::TetMesh& mesh, std::span<const VertId> candidates,
+                             std::vector<NewVertex>& made, std::vector<engine::TetId>& changed) {
+  const std::size_t first_made = made.empty() ? mesh.num_vertices() : made.front().id.index();
+  std::vector<std::int32_t> slot(mesh.num_vertices(), -1);
+  std::vector<VertId> vertices;
+  for (VertId v : candidates)
+    if (slot[v.index()] < 0) {
+      slot[v.index()] = static_cast<std::int32_t>(vertices.size());
+      vertices.push_back(v);
+    }
+  std::vector<std::vector<std::uint32_t>> star(vertices.size());
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (VertId v : mesh.tets[t])
+      if (slot[v.index()] >= 0) star[static_cast<std::size_t>(slot[v.index()])].push_back(static_cast<std::uint32_t>(t));
+
+  std::size_t copies = 0;
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const VertId v = vertices[i];
+    const auto& tets = star[i];
+    if (tets.size() < 2) continue;
+    // Tets around v are joined through faces holding v: key them by the
+    // face's two other vertices.
+    std::vector<std::size_t> parent(tets.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](std::size_t x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    std::unordered_map<std::uint64_t, std::size_t> first_with;
+    for (std::size_t j = 0; j < tets.size(); ++j) {
+      const engine::Tet& tet = mesh.tets[tets[j]];
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b) {
+          if (tet[a] == v || tet[b] == v) continue;
+          const auto lo = static_cast<std::uint64_t>(std::min(tet[a], tet[b]).value);
+          const auto hi = static_cast<std::uint64_t>(std::max(tet[a], tet[b]).value);
+          const auto [it, fresh] = first_with.emplace(lo << 32 | hi, j);
+          if (!fresh) parent[find(j)] = find(it->second);
+        }
+    }
+    // The part of the first tet keeps v; every other part gets a copy.
+    std::unordered_map<std::size_t, VertId> copy_of;
+    const std::size_t keep = find(0);
+    for (std::size_t j = 0; j < tets.size(); ++j) {
+      const std::size_t root = find(j);
+      if (root == keep) continue;
+      auto [it, fresh] = copy_of.emplace(root, VertId());
+      if (fresh) {
+        NewVertex copy;
+        copy.id = VertId(mesh.num_vertices());
+        copy.key.kind = PointKind::kVertexCopy;
+        copy.key.ids = {v.value, static_cast<std::int32_t>(copy_of.size()), -1, -1};
+        if (v.index() >= first_made && v.index() - first_made < made.size()) {
+          copy.source = made[v.index() - first_made].source;  // a copy of a new vertex
+        } else {
+          copy.source.position = mesh.positions[v.index()];
+          copy.source.parents[0] = v;
+          copy.source.weights[0] = 1;
+        }
+        mesh.positions.push_back(mesh.positions[v.index()]);
+        made.push_back(copy);
+        it->second = copy.id;
+        ++copies;
+      }
+      for (VertId& w : mesh.tets[tets[j]])
+        if (w == v) w = it->second;
+      changed.push_back(engine::TetId(static_cast<std::size_t>(tets[j])));
+    }
+  }
+  return copies;
+}
+
+}  // namespace mtcut::cut
