@@ -1,0 +1,32 @@
+#include "cut/mt/mt_change_report.h"
+
+namespace mtcut::cut {
+
+void MtCutCounts::add(const MtCutCounts& o) {
+  split_tets += o.split_tets;
+  relabeled_tets += o.relabeled_tets;
+  new_tets += o.new_tets;
+  new_vertices += o.new_vertices;
+  split_fragments += o.split_fragments;
+  new_fragments += o.new_fragments;
+  whole_fragments += o.whole_fragments;
+  jobs += o.jobs;
+  find_seconds += o.find_seconds;
+  split_seconds += o.split_seconds;
+  dag_seconds += o.dag_seconds;
+}
+
+void MtChangeReport::append(const MtChangeReport& later) {
+  const auto offset = static_cast<std::uint32_t>(made_tets.size());
+  for (TetReplacement r : later.replaced) {
+    r.first += offset;
+    replaced.push_back(r);
+  }
+  made_tets.insert(made_tets.end(), later.made_tets.begin(), later.made_tets.end());
+  made_vertices.insert(made_vertices.end(), later.made_vertices.begin(), later.made_vertices.end());
+  fragment_splits.insert(fragment_splits.end(), later.fragment_splits.begin(), later.fragment_splits.end());
+  processed.insert(processed.end(), later.processed.begin(), later.processed.end());
+  counts.add(later.counts);
+}
+
+}  // namespace mtcut::cut

@@ -1,0 +1,155 @@
+#include "cut/mt/mt_pieces.h"
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+namespace mtcut::cut {
+namespace {
+
+using engine::VertId;
+
+struct UnionFind {
+  std::vector<std::int32_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::int32_t find(std::int32_t x) {
+    while (parent[static_cast<std::size_t>(x)] != x) {
+      const std::int32_t up = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+      parent[static_cast<std::size_t>(x)] = up;
+      x = up;
+    }
+    return x;
+  }
+  void unite(std::int32_t a, std::int32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+  }
+};
+
+}  // namespace
+
+MtPieces find_pieces(const Mt& mt) {
+  // Nodes: the finest tets (sorted), then one per fragment.
+  std::vector<TetId> finest(mt.created(mt.root()).begin(), mt.created(mt.root()).end());
+  std::sort(finest.begin(), finest.end());
+  const std::size_t n_fine = finest.size();
+  std::vector<std::int32_t> fine_index(mt.num_tets(), -1);
+  for (std::size_t i = 0; i < n_fine; ++i) fine_index[finest[i].index()] = static_cast<std::int32_t>(i);
+  UnionFind uf(n_fine + mt.num_fragments());
+  const auto frag_node = [&](FragId f) { return static_cast<std::int32_t>(n_fine + f.index()); };
+  const auto tet_node = [&](TetId t) {
+    return mt.birth(t) == mt.root() ? fine_index[t.index()] : frag_node(mt.birth(t));
+  };
+
+  std::vector<std::int32_t> owner(mt.num_vertices(), -1);
+  for (std::size_t i = 0; i < n_fine; ++i)
+    for (VertId v : mt.tet(finest[i])) {
+      if (owner[v.index()] < 0)
+        owner[v.index()] = static_cast<std::int32_t>(i);
+      else
+        uf.unite(owner[v.index()], static_cast<std::int32_t>(i));
+    }
+  for (std::size_t i = 0; i < mt.num_tets(); ++i) {
+    const TetId t(i);
+    if (!mt.alive(t) || mt.death(t) == mt.drain()) continue;
+    uf.unite(tet_node(t), frag_node(mt.death(t)));
+  }
+
+  MtPieces pieces;
+  std::vector<std::int32_t> piece_of_root(uf.parent.size(), -1);
+  for (std::size_t i = 0; i < n_fine; ++i) {
+    const auto r = static_cast<std::size_t>(uf.find(static_cast<std::int32_t>(i)));
+    if (piece_of_root[r] < 0) {
+      piece_of_root[r] = static_cast<std::int32_t>(pieces.count++);
+      pieces.finest_tets.push_back(0);
+      pieces.volume.push_back(0);
+    }
+    const auto p = static_cast<std::size_t>(piece_of_root[r]);
+    ++pieces.finest_tets[p];
+    pieces.volume[p] += mt.volume(finest[i]);
+  }
+  pieces.fragments.resize(pieces.count);
+  pieces.fragment_piece.assign(mt.num_fragments(), -1);
+  for (std::size_t f = 0; f < mt.num_fragments(); ++f) {
+    if (FragId(f) == mt.root() || FragId(f) == mt.drain()) continue;
+    const std::int32_t p = piece_of_root[static_cast<std::size_t>(uf.find(frag_node(FragId(f))))];
+    pieces.fragment_piece[f] = p;
+    if (p >= 0) pieces.fragments[static_cast<std::size_t>(p)].emplace_back(f);
+  }
+  pieces.tet_piece.assign(mt.num_tets(), -1);
+  for (std::size_t i = 0; i < mt.num_tets(); ++i)
+    if (mt.alive(TetId(i)))
+      pieces.tet_piece[i] = piece_of_root[static_cast<std::size_t>(uf.find(tet_node(TetId(i))))];
+  return pieces;
+}
+
+engine::ValidationReport validate_pieces(const Mt& mt, const MtPieces& pieces) {
+  engine::ValidationReport report;
+  if (pieces.fragment_piece.size() != mt.num_fragments() || pieces.tet_piece.size() != mt.num_tets()) {
+    report.add("pieces: sized for another MT");
+    return report;
+  }
+  for (std::size_t f = 0; f < mt.num_fragments(); ++f) {
+    const bool special = FragId(f) == mt.root() || FragId(f) == mt.drain();
+    const std::int32_t p = pieces.fragment_piece[f];
+    if (!special && (p < 0 || static_cast<std::size_t>(p) >= pieces.count))
+      report.add("pieces: fragment " + std::to_string(f) + " is in no piece");
+  }
+  for (std::size_t i = 0; i < mt.num_tets(); ++i) {
+    const TetId t(i);
+    if (!mt.alive(t)) continue;
+    const std::int32_t p = pieces.tet_piece[i];
+    if (p < 0) report.add("pieces: tet " + std::to_string(i) + " is in no piece");
+    for (FragId f : {mt.birth(t), mt.death(t)})
+      if (f != mt.root() && f != mt.drain() && pieces.fragment_piece[f.index()] != p)
+        report.add("pieces: tet " + std::to_string(i) + " joins pieces " + std::to_string(p) + " and " +
+                   std::to_string(pieces.fragment_piece[f.index()]));
+  }
+  return report;
+}
+
+Mt extract_piece_mt(const Mt& mt, const MtPieces& pieces, std::size_t piece, std::vector<VertId>* vertex_ids) {
+  const auto p = static_cast<std::int32_t>(piece);
+  std::vector<TetId> fine, rest;
+  std::vector<std::int32_t> local(mt.num_vertices(), -1);
+  std::vector<VertId> ids;
+  for (std::size_t i = 0; i < mt.num_tets(); ++i) {
+    const TetId t(i);
+    if (!mt.alive(t) || pieces.tet_piece[i] != p) continue;
+    (mt.birth(t) == mt.root() ? fine : rest).push_back(t);
+    for (VertId v : mt.tet(t))
+      if (local[v.index()] < 0) {
+        local[v.index()] = 0;
+        ids.push_back(v);
+      }
+  }
+  std::sort(ids.begin(), ids.end());
+  for (std::size_t i = 0; i < ids.size(); ++i) local[ids[i].index()] = static_cast<std::int32_t>(i);
+  const auto renumber = [&](TetId t) {
+    engine::Tet tet = mt.tet(t);
+    for (VertId& v : tet) v = VertId(local[v.index()]);
+    return tet;
+  };
+
+  engine::TetMesh mesh;
+  for (VertId v : ids) mesh.positions.push_back(mt.position(v));
+  for (TetId t : fine) mesh.tets.push_back(renumber(t));
+  Mt out = Mt::from_fine_mesh(mesh);
+  out.set_boundary_preserved(mt.boundary_preserved());
+  std::vector<FragId> frag_map(mt.num_fragments());
+  frag_map[mt.root().index()] = out.root();
+  for (FragId f : pieces.fragments[piece]) frag_map[f.index()] = out.add_fragment();
+  const FragId drain = out.add_fragment();
+  out.set_drain(drain);
+  frag_map[mt.drain().index()] = drain;
+  for (std::size_t i = 0; i < fine.size(); ++i) {
+    out.set_boundary_mask(TetId(i), mt.boundary_mask(fine[i]));
+    out.set_death(TetId(i), frag_map[mt.death(fine[i]).index()]);
+  }
+  for (TetId t : rest)
+    out.add_tet(renumber(t), frag_map[mt.birth(t).index()], frag_map[mt.death(t).index()], mt.boundary_mask(t));
+  if (vertex_ids) *vertex_ids = std::move(ids);
+  return out;
+}
+
+}  // namespace mtcut::cut

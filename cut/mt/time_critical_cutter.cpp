@@ -1,0 +1,141 @@
+#include "cut/mt/time_critical_cutter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+namespace mtcut::cut {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+}  // namespace
+
+TimeCriticalCutter::TimeCriticalCutter(const TimeCriticalCutterDef& def) : def_(def), table_(def.cut.scheme) {}
+
+void TimeCriticalCutter::submit(const Mt& mt, const CutPolygon& polygon, std::vector<Vec3> geometry) {
+  if (!geometry.empty() && geometry.size() != mt.num_vertices())
+    throw std::invalid_argument("TimeCriticalCutter::submit: " + std::to_string(geometry.size()) +
+                                " positions for " + std::to_string(mt.num_vertices()) + " MT vertices");
+  queue_.push_back({polygon, std::move(geometry)});
+}
+
+void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {
+  // Queued deformed cuts follow the vertices made since they were submitted:
+  // each at the same weights of its parents (parents always have lower ids).
+  for (Queued& q : queue_) {
+    if (q.geometry.empty()) continue;
+    for (const MadeVertex& m : made) {
+      if (m.id.index() < q.geometry.size()) continue;
+      Vec3 p = Vec3::Zero();
+      for (int i = 0; i < 4; ++i)
+        if (m.source.parents[i].valid()) p += m.source.weights[i] * q.geometry[m.source.parents[i].index()];
+      q.geometry.push_back(p);
+    }
+  }
+}
+
+void TimeCriticalCutter::start_next(const Mt& mt, const TetBvh& bvh, const Frontier& frontier) {
+  Queued q = std::move(queue_.front());
+  queue_.pop_front();
+  Active a;
+  a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, std::move(q.geometry), def_.cut, table_);
+  const auto jobs = a.cut->jobs();
+  for (std::size_t j = 0; j < jobs.size(); ++j)
+    if (frontier.is_visible(jobs[j])) a.order.push_back(j);
+  a.visible = a.order.size();
+  for (std::size_t j = 0; j < jobs.size(); ++j)
+    if (!frontier.is_visible(jobs[j])) a.order.push_back(j);
+  active_ = std::move(a);
+}
+
+TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const Frontier& frontier,
+                                                      const CutBudget& budget) {
+  const auto start = Clock::now();
+  RunResult result;
+  std::size_t spent = 0, jobs = 0;
+  const auto over_budget = [&] {
+    if (jobs == 0) return false;
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    return spent >= budget.work || ms >= budget.milliseconds;
+  };
+  while (active_ || !queue_.empty()) {
+    if (!active_) {
+      if (over_budget()) break;
+      start_next(mt, bvh, frontier);
+      result.changes.counts.find_seconds += active_->cut->find_seconds();
+    }
+    Active& a = *active_;
+    while (a.next < a.order.size()) {
+      const bool in_visible = a.next < a.visible && a.next > 0;
+      if (!(def_.visible_at_once && in_visible) && over_budget()) break;
+      const std::size_t job = a.order[a.next++];
+      const std::size_t before = result.changes.made_vertices.size();
+      spent += a.cut->job_cost(mt, job);
+      a.cut->process(mt, bvh, job, result.changes);
+      ++jobs;
+      if (result.changes.made_vertices.size() > before && !queue_.empty()) {
+        extend_geometry(std::span<const MadeVertex>(result.changes.made_vertices).subspan(before));
+      }
+    }
+    if (a.next < a.order.size()) break;
+    active_.reset();
+    ++result.cuts_finished;
+    ++totals_.cuts_finished;
+    if (def_.report_pieces) result.pieces = find_pieces(mt);
+  }
+  totals_.total_jobs_done += jobs;
+  totals_.seconds += std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+CutterProgress TimeCriticalCutter::progress() const {
+  CutterProgress p = totals_;
+  p.cuts_queued = queue_.size() + (active_ ? 1 : 0);
+  if (active_) {
+    p.jobs_done = active_->next;
+    p.jobs_pending = active_->order.size() - active_->next;
+    p.visible_pending = active_->visible > active_->next ? active_->visible - active_->next : 0;
+  }
+  return p;
+}
+
+engine::ValidationReport TimeCriticalCutter::validate(const Mt& mt) const {
+  engine::ValidationReport report;
+  if (!active_) return report;
+  const Active& a = *active_;
+  report = a.cut->validate(mt);
+  for (std::size_t i = 0; i < a.order.size(); ++i) {
+    const bool done = a.cut->job_done(a.order[i]);
+    if (done != (i < a.next)) report.add("cutter: job order entry " + std::to_string(i) + " done out of order");
+  }
+  if (a.cut->jobs_finished() != a.next) report.add("cutter: jobs done miscounted");
+  return report;
+}
+
+std::vector<FragId> map_fragment_set(std::span<const FragId> fragments, std::span<const FragmentSplit> splits) {
+  std::vector<FragId> out(fragments.begin(), fragments.end());
+  std::size_t n = 0;
+  for (FragId f : out) n = std::max(n, f.index() + 1);
+  for (const FragmentSplit& s : splits)
+    for (FragId p : s.parts) n = std::max(n, p.index() + 1);
+  std::vector<char> in(n, 0);
+  for (FragId f : out) in[f.index()] = 1;
+  for (const FragmentSplit& s : splits) {
+    if (!in[s.old.index()]) continue;
+    for (FragId p : s.parts)
+      if (!in[p.index()]) {
+        in[p.index()] = 1;
+        out.push_back(p);
+      }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Frontier map_frontier(const Mt& mt, const Frontier& frontier, std::span<const FragmentSplit> splits) {
+  const std::vector<FragId> set = map_fragment_set(frontier.fragments(), splits);
+  return Frontier::from_fragments(mt, set);
+}
+
+}  // namespace mtcut::cut

@@ -1,0 +1,120 @@
+#pragma once
+// The time-critical cutter (paper, section 6; DESIGN.md "Time-critical
+// cutter"): cuts queue up, each becomes fragment jobs (mt_cut.h), and every
+// frame run(budget) does as many jobs as the budget allows, the fragments
+// the current frontier shows first, the rest in later frames.
+//
+// Why the frontier is frozen, and how it follows. While a cut is half done
+// the MT mixes split and unsplit tets, and only fragment sets whose
+// fragments are all processed (or untouched) are conforming meshes; so the
+// resolution may not change (frozen()) until every job is done. The set S
+// itself must still follow the cut: when a fragment f in S falls into parts,
+// every part must be in S (map_fragment_set), otherwise a part's children
+// could be in S without their parent. With visible_at_once (default) the
+// first call that reaches a cut's visible jobs does all of them, whatever the
+// budget, so the mesh the World shows is, after every call, the frontier of
+// the mapped S with the whole cut in it (all frontier tets the cut crosses
+// are created by visible fragments). The World's step after each run():
+//     report = cutter.run(mt, bvh, frontier, budget);
+//     frontier = map_frontier(mt, frontier, report.fragment_splits);
+//     carry state over the report (made vertices, replaced tets);
+//     if (!cutter.frozen()) move the frontier (selective refinement).
+//
+// Budgets are work units (tets split or relabelled, plus one per job: the
+// same on every machine, so runs are reproducible) and/or milliseconds;
+// every call does at least one job when any is pending.
+
+#include <cstdint>
+#include <deque>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "cut/mt/mt_cut.h"
+#include "cut/mt/mt_pieces.h"
+#include "engine/mt/frontier.h"
+
+namespace mtcut::cut {
+
+using engine::Frontier;
+
+struct CutBudget {
+  std::size_t work = std::numeric_limits<std::size_t>::max();  // work units (see above)
+  double milliseconds = std::numeric_limits<double>::infinity();
+  static CutBudget unlimited() { return {}; }
+  static CutBudget units(std::size_t w) { return {w, std::numeric_limits<double>::infinity()}; }
+  static CutBudget ms(double m) { return {std::numeric_limits<std::size_t>::max(), m}; }
+};
+
+struct TimeCriticalCutterDef {
+  MtCutDef cut;
+  bool visible_at_once = true;  // a call that starts a cut's visible jobs finishes them
+  bool report_pieces = true;    // find_pieces() when a cut completes (costs a pass over the MT)
+};
+
+struct CutterProgress {
+  std::size_t cuts_queued = 0;       // cuts not finished, the active one included
+  std::size_t jobs_done = 0;         // of the active cut
+  std::size_t jobs_pending = 0;      // of the active cut (queued cuts are not searched yet)
+  std::size_t visible_pending = 0;   // of the active cut
+  std::size_t cuts_finished = 0;     // since construction
+  std::size_t total_jobs_done = 0;   // since construction
+  double seconds = 0;                // spent in run() since construction
+};
+
+class TimeCriticalCutter {
+ public:
+  explicit TimeCriticalCutter(const TimeCriticalCutterDef& def = {});
+
+  // Queues a cut behind the others. `geometry`: positions of the MT's
+  // current vertices the cut is computed on (deformed), empty = rest
+  // positions when the cut starts. Vertices made before it starts get theirs
+  // from their parents.
+  void submit(const Mt& mt, const CutPolygon& polygon, std::vector<Vec3> geometry = {});
+
+  // Processes jobs within `budget`, visible fragments of `frontier` first
+  // (frontier: the World's, mapped after every call). Returns what changed;
+  // `pieces` is filled when the call finished a cut and def.report_pieces.
+  struct RunResult {
+    MtChangeReport changes;
+    std::size_t cuts_finished = 0;
+    std::optional<MtPieces> pieces;  // after the last cut this call finished
+  };
+  RunResult run(Mt& mt, TetBvh& bvh, const Frontier& frontier, const CutBudget& budget);
+
+  bool frozen() const { return active_.has_value() || !queue_.empty(); }
+  CutterProgress progress() const;
+  // The active cut's bookkeeping (MtCut::validate) and the job order:
+  // no hidden job done while a visible one is pending.
+  engine::ValidationReport validate(const Mt& mt) const;
+
+ private:
+  struct Queued {
+    CutPolygon polygon;
+    std::vector<Vec3> geometry;  // empty = rest
+  };
+  struct Active {
+    std::unique_ptr<MtCut> cut;
+    std::vector<std::size_t> order;   // jobs: visible first, then hidden, ascending within each
+    std::size_t visible = 0;          // leading entries of `order` that are visible
+    std::size_t next = 0;             // next entry of `order`
+  };
+  void start_next(const Mt& mt, const TetBvh& bvh, const Frontier& frontier);
+  void extend_geometry(std::span<const MadeVertex> made);
+
+  TimeCriticalCutterDef def_;
+  SplitTable table_;
+  std::deque<Queued> queue_;
+  std::optional<Active> active_;
+  CutterProgress totals_;
+};
+
+// S mapped through fragment splits (in order): every part of a fragment in S is in S.
+std::vector<FragId> map_fragment_set(std::span<const FragId> fragments, std::span<const FragmentSplit> splits);
+// The frontier of the mapped set, rebuilt over the MT as it is now (its
+// tets, vertices and visible fragments follow the split tets).
+Frontier map_frontier(const Mt& mt, const Frontier& frontier, std::span<const FragmentSplit> splits);
+
+}  // namespace mtcut::cut

@@ -1,0 +1,198 @@
+#include "cut/mt/mt_cut.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "cut/mt/mt_pieces.h"
+#include "tests/cut/mt/mt_cut_test_util.h"
+
+namespace mtcut::test {
+namespace {
+
+using cut::cut_mt;
+using cut::CutMtOptions;
+using cut::JobOrder;
+using cut::MtChangeReport;
+
+// Every check of "Done when" after one cut of a sequence.
+void check_after_cut(const Mt& mt, const std::vector<CutPolygon>& cuts, const std::vector<double>& slack,
+                     double original_volume,
+                     std::mt19937_64& rng, const std::string& where) {
+  const auto report = mt.validate();
+  ASSERT_TRUE(report.ok()) << where << ": " << report.summary();
+  const auto pieces = cut::find_pieces(mt);
+  const auto piece_report = cut::validate_pieces(mt, pieces);
+  ASSERT_TRUE(piece_report.ok()) << where << ": " << piece_report.summary();
+  double pieces_volume = 0;
+  for (double v : pieces.volume) pieces_volume += v;
+  EXPECT_NEAR(pieces_volume, mt.fine_volume(), 1e-9 * mt.fine_volume()) << where;
+  // validate() checked the finest and coarsest frontiers; two random ones too.
+  for (int i = 0; i < 4; ++i) {
+    const Frontier frontier = i == 0 ? Frontier::finest(mt) : i == 1 ? Frontier::coarsest(mt) : random_frontier(mt, rng);
+    if (i >= 2) {
+      const auto fr = engine::validate_frontier(mt, frontier);
+      ASSERT_TRUE(fr.ok()) << where << " frontier " << i << ": " << fr.summary();
+    }
+    if (mt.boundary_preserved()) {
+      EXPECT_NEAR(frontier.volume(mt), original_volume, 1e-9 * original_volume) << where;
+    }
+    // The last cut exactly; the earlier ones away from their outlines.
+    for (std::size_t c = 0; c < cuts.size(); ++c) {
+      const double s = c + 1 == cuts.size() ? 0.0 : slack[c];
+      EXPECT_EQ(properly_crossed_tets(mt, frontier, cuts[c], s), 0u) << where << " frontier " << i << " cut " << c;
+    }
+  }
+}
+
+void run_sequence(const std::string& name, int cuts, std::uint64_t seed) {
+  Mt mt = cut_test_mt(name);
+  engine::TetBvh bvh(mt);
+  std::mt19937_64 rng(seed);
+  const engine::Aabb box = mt_box(mt);
+  const double volume = mt.fine_volume();
+  std::vector<CutPolygon> polygons;
+  std::vector<double> slack;
+  cut::SplitTable table;
+  std::size_t split = 0, whole = 0;
+  for (int i = 0; i < cuts; ++i) {
+    const bool complete = i % 5 == 4;
+    polygons.push_back(random_polygon(box, rng, complete));
+    slack.push_back(longest_edge_near(mt, bvh, polygons.back()));
+    CutMtOptions options;
+    options.order = static_cast<JobOrder>(i % 3);
+    options.seed = seed + static_cast<std::uint64_t>(i);
+    const MtChangeReport r = cut_mt(mt, bvh, polygons.back(), {}, options, &table);
+    split += r.counts.split_tets;
+    whole += r.counts.whole_fragments;
+    EXPECT_EQ(r.counts.new_vertices, r.made_vertices.size());
+    for (const auto& m : r.made_vertices) {
+      Vec3 rest = Vec3::Zero();
+      for (int k = 0; k < 4; ++k)
+        if (m.source.parents[k].valid()) rest += m.source.weights[k] * mt.position(m.source.parents[k]);
+      EXPECT_EQ(rest, mt.position(m.id));
+    }
+    check_after_cut(mt, polygons, slack, volume, rng, name + " cut " + std::to_string(i));
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  EXPECT_GT(split, 0u);
+  std::printf("%s: %d cuts, %zu tets split, %zu fragments kept whole; MT now %zu live tets, %zu fragments\n",
+              name.c_str(), cuts, split, whole, mt.num_live_tets(), mt.num_fragments());
+  ::testing::Test::RecordProperty("split_tets", static_cast<int>(split));
+  ::testing::Test::RecordProperty("whole_fragments", static_cast<int>(whole));
+}
+
+TEST(MtCut, RandomSequenceEllipsoid) { run_sequence("ellipsoid", 24, 11); }
+TEST(MtCut, RandomSequenceLiver) { run_sequence("liver", 24, 12); }
+TEST(MtCut, RandomSequencePaperPreset) { run_sequence("paper", 6, 13); }
+
+TEST(MtCut, OrderOfFragmentsDoesNotMatter) {
+  for (const std::string name : {"ellipsoid", "liver"}) {
+    std::mt19937_64 rng(21);
+    const engine::Aabb box = mt_box(cut_test_mt(name));
+    std::vector<CutPolygon> polygons;
+    for (int i = 0; i < 6; ++i) polygons.push_back(random_polygon(box, rng, i == 3));
+    std::vector<std::vector<std::tuple<TetKey, std::size_t, std::size_t>>> results;
+    for (int order = 0; order < 4; ++order) {
+      Mt mt = cut_test_mt(name);
+      engine::TetBvh bvh(mt);
+      for (std::size_t i = 0; i < polygons.size(); ++i) {
+        CutMtOptions options;
+        options.order = static_cast<JobOrder>(std::min(order, 2));
+        options.seed = 100 + static_cast<std::uint64_t>(order) * 7 + i;
+        cut_mt(mt, bvh, polygons[i], {}, options);
+      }
+      ASSERT_TRUE(mt.validate().ok());
+      results.push_back(canonical_mt(mt));
+    }
+    for (std::size_t k = 1; k < results.size(); ++k) EXPECT_TRUE(results[k] == results[0]) << name << " order " << k;
+  }
+}
+
+TEST(MtCut, SeparatingCutGivesTwoValidPieces) {
+  for (const std::string name : {"ellipsoid", "liver", "paper"}) {
+    Mt mt = cut_test_mt(name);
+    engine::TetBvh bvh(mt);
+    const engine::Aabb box = mt_box(mt);
+    const Vec3 c = box.center(), s = box.hi - box.lo;
+    // A plane through the middle, slightly tilted so it meets no vertex exactly.
+    const double h = s.norm();
+    const Vec3 a = Vec3(0.0137, 1, 0.0071).normalized(), b = Vec3(0.0093, -0.0111, 1).normalized();
+    const auto polygon = CutPolygon::from_points({c + h * (a + b), c + h * (b - a), c - h * (a + b), c + h * (a - b)});
+    const MtChangeReport r = cut_mt(mt, bvh, polygon);
+    ASSERT_TRUE(mt.validate().ok()) << name << ": " << mt.validate().summary();
+    EXPECT_GT(r.counts.split_fragments, 0u) << name;
+    EXPECT_EQ(r.counts.whole_fragments, 0u) << name;
+    const auto pieces = cut::find_pieces(mt);
+    ASSERT_TRUE(cut::validate_pieces(mt, pieces).ok()) << name;
+    ASSERT_EQ(pieces.count, 2u) << name;
+    double sum = 0;
+    for (std::size_t p = 0; p < pieces.count; ++p) {
+      const Mt piece = cut::extract_piece_mt(mt, pieces, p);
+      const auto pr = piece.validate();
+      EXPECT_TRUE(pr.ok()) << name << " piece " << p << ": " << pr.summary();
+      EXPECT_NEAR(piece.fine_volume(), pieces.volume[p], 1e-12 * mt.fine_volume());
+      EXPECT_EQ(piece.num_fragments(), pieces.fragments[p].size() + 2);
+      sum += piece.fine_volume();
+      EXPECT_GT(piece.fine_volume(), 0.05 * mt.fine_volume());
+    }
+    EXPECT_NEAR(sum, mt.fine_volume(), 1e-9 * mt.fine_volume()) << name;
+  }
+}
+
+TEST(MtCut, DeformedGeometryCutsWhereTheDeformedTissueIs) {
+  // A rigid shift: cutting the shifted object by the shifted polygon is the
+  // same as cutting the rest object by the polygon.
+  Mt rest_mt = cut_test_mt("ellipsoid");
+  Mt moved_mt = rest_mt;
+  engine::TetBvh rest_bvh(rest_mt), moved_bvh(moved_mt);
+  std::mt19937_64 rng(5);
+  const auto polygon = random_polygon(mt_box(rest_mt), rng, false);
+  const Vec3 shift(0.25, -0.5, 0.125);  // exact in binary: no rounding in the shift
+  std::vector<Vec3> deformed(moved_mt.positions().begin(), moved_mt.positions().end());
+  for (Vec3& p : deformed) p += shift;
+  std::vector<Vec3> shifted_corners;
+  for (const Vec3& p : polygon.corners()) shifted_corners.push_back(p + shift);
+  const auto shifted = CutPolygon::from_points(shifted_corners);
+  const auto r1 = cut_mt(rest_mt, rest_bvh, polygon);
+  const auto r2 = cut_mt(moved_mt, moved_bvh, shifted, deformed);
+  ASSERT_TRUE(moved_mt.validate().ok());
+  EXPECT_EQ(r1.counts.split_tets, r2.counts.split_tets);
+  EXPECT_EQ(r1.counts.new_tets, r2.counts.new_tets);
+  ASSERT_EQ(r1.made_vertices.size(), r2.made_vertices.size());
+  for (std::size_t i = 0; i < r1.made_vertices.size(); ++i) {
+    EXPECT_LT((r1.made_vertices[i].rest - r2.made_vertices[i].rest).norm(), 1e-12);
+    EXPECT_LT((r2.made_vertices[i].source.position - r2.made_vertices[i].rest - shift).norm(), 1e-12);
+  }
+}
+
+TEST(MtCut, SplitTetsKeepBirthDeathAndNewTetsPerSplitTet) {
+  Mt mt = cut_test_mt("ellipsoid");
+  engine::TetBvh bvh(mt);
+  std::mt19937_64 rng(9);
+  const Mt before = mt;
+  const auto r = cut_mt(mt, bvh, random_polygon(mt_box(mt), rng, true));
+  ASSERT_GT(r.counts.split_tets, 0u);
+  std::map<std::int32_t, std::vector<FragId>> parts;
+  for (const auto& s : r.fragment_splits) parts[s.old.value] = s.parts;
+  const auto same_or_part = [&](FragId old, FragId now) {
+    if (old == now) return true;
+    const auto it = parts.find(old.value);
+    return it != parts.end() && std::find(it->second.begin(), it->second.end(), now) != it->second.end();
+  };
+  for (const auto& rep : r.replaced) {
+    EXPECT_FALSE(mt.alive(rep.old));
+    for (std::uint32_t k = 0; k < rep.count; ++k) {
+      const TetId t = r.made_tets[rep.first + k];
+      EXPECT_TRUE(same_or_part(before.birth(rep.old), mt.birth(t)));
+      EXPECT_TRUE(same_or_part(before.death(rep.old), mt.death(t)));
+    }
+  }
+  const double per = static_cast<double>(r.counts.new_tets) / static_cast<double>(r.counts.split_tets);
+  EXPECT_LT(per, 6.0);
+  // The BVH follows: every live tet is found where it is.
+  EXPECT_EQ(bvh.size(), mt.num_live_tets());
+}
+
+}  // namespace
+}  // namespace mtcut::test

@@ -1,0 +1,118 @@
+#include "cut/mt/time_critical_cutter.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/cut/mt/mt_cut_test_util.h"
+
+namespace mtcut::test {
+namespace {
+
+using cut::CutBudget;
+using cut::TimeCriticalCutter;
+
+// Runs `polygons` through a cutter with `budget` per call, checking after
+// every call: frozen while jobs are pending, the MT valid, the mapped
+// frontier valid and showing every cut whose visible jobs are done, and no
+// hidden job before a visible one of the same cut.
+Mt run_cutter(const std::vector<CutPolygon>& polygons, const CutBudget& budget, bool visible_at_once,
+              std::size_t* calls_out) {
+  Mt mt = cut_test_mt("ellipsoid");
+  engine::TetBvh bvh(mt);
+  std::mt19937_64 rng(3);
+  Frontier frontier = random_frontier(mt, rng);
+  cut::TimeCriticalCutterDef def;
+  def.visible_at_once = visible_at_once;
+  TimeCriticalCutter cutter(def);
+  for (const auto& p : polygons) cutter.submit(mt, p);
+  EXPECT_TRUE(cutter.frozen());
+  std::size_t calls = 0, finished = 0;
+  bool hidden_seen = false;
+  std::vector<char> visible_at_start;
+  while (cutter.frozen()) {
+    const auto before = cutter.progress();
+    if (before.jobs_done == 0) {
+      // A cut starts in this call (or the previous one did not reach it):
+      // its visible set is the frontier's now.
+      hidden_seen = false;
+      visible_at_start.assign(mt.num_fragments(), 0);
+      for (FragId f : frontier.visible_fragments()) visible_at_start[f.index()] = 1;
+    }
+    const auto result = cutter.run(mt, bvh, frontier, budget);
+    ++calls;
+    for (FragId f : result.changes.processed) {
+      const bool visible = f.index() < visible_at_start.size() && visible_at_start[f.index()];
+      if (result.cuts_finished == 0) {
+        EXPECT_FALSE(visible && hidden_seen) << "a visible job after a hidden one";
+      }
+      hidden_seen = hidden_seen || !visible;
+    }
+    frontier = cut::map_frontier(mt, frontier, result.changes.fragment_splits);
+    const auto cr = cutter.validate(mt);
+    EXPECT_TRUE(cr.ok()) << cr.summary();
+    finished += result.cuts_finished;
+    const auto p = cutter.progress();
+    // Spread visible jobs leave the visible mesh half cut: the World waits for them.
+    if (visible_at_once || p.visible_pending == 0) {
+      const auto fr = engine::validate_frontier(mt, frontier);
+      EXPECT_TRUE(fr.ok()) << "after call " << calls << ": " << fr.summary();
+    }
+    EXPECT_EQ(cutter.frozen(), p.cuts_queued > 0);
+    // Every finished cut, and the active one once its visible jobs are done, is in the mesh.
+    const std::size_t shown = finished + (p.cuts_queued > 0 && p.jobs_done > 0 && p.visible_pending == 0 ? 1 : 0);
+    // (Earlier cuts are checked near their outline in mt_cut_test; here the
+    // last cut that changed the MT, once shown, is checked exactly.)
+    const std::size_t started = finished + (p.cuts_queued > 0 && p.jobs_done > 0 ? 1 : 0);
+    if (shown == started && shown > 0) {
+      EXPECT_EQ(properly_crossed_tets(mt, frontier, polygons[shown - 1]), 0u) << "call " << calls;
+    }
+    if (visible_at_once && p.cuts_queued > 0 && p.jobs_done > 0) {
+      EXPECT_EQ(p.visible_pending, 0u);
+    }
+    if (calls > 100000) break;
+  }
+  EXPECT_EQ(finished, polygons.size());
+  const auto report = mt.validate();
+  EXPECT_TRUE(report.ok()) << report.summary();
+  *calls_out = calls;
+  return mt;
+}
+
+std::vector<CutPolygon> three_cuts() {
+  Mt const& mt = cut_test_mt("ellipsoid");
+  std::mt19937_64 rng(77);
+  return {random_polygon(mt_box(mt), rng, false), random_polygon(mt_box(mt), rng, true),
+          random_polygon(mt_box(mt), rng, false)};
+}
+
+TEST(TimeCriticalCutter, TinyBudgetGivesTheSameMtAsUnlimited) {
+  const auto polygons = three_cuts();
+  std::size_t calls_unlimited = 0, calls_tiny = 0, calls_spread = 0;
+  const Mt unlimited = run_cutter(polygons, CutBudget::unlimited(), true, &calls_unlimited);
+  const Mt tiny = run_cutter(polygons, CutBudget::units(1), true, &calls_tiny);
+  const Mt spread = run_cutter(polygons, CutBudget::units(1), false, &calls_spread);
+  EXPECT_EQ(calls_unlimited, 1u);
+  EXPECT_GT(calls_tiny, 3u);
+  EXPECT_GT(calls_spread, calls_tiny);
+  EXPECT_TRUE(canonical_mt(tiny) == canonical_mt(unlimited));
+  EXPECT_TRUE(canonical_mt(spread) == canonical_mt(unlimited));
+}
+
+TEST(TimeCriticalCutter, MillisecondBudgetAndProgress) {
+  const auto polygons = three_cuts();
+  std::size_t calls = 0;
+  const Mt mt = run_cutter(polygons, CutBudget::ms(0.01), true, &calls);
+  EXPECT_GE(calls, 3u);
+}
+
+TEST(TimeCriticalCutter, MapFragmentSetAddsEveryPart) {
+  const std::vector<FragId> s = {FragId(0), FragId(2), FragId(5)};
+  const std::vector<cut::FragmentSplit> splits = {{FragId(2), {FragId(2), FragId(9)}},
+                                                  {FragId(9), {FragId(9), FragId(11), FragId(12)}},
+                                                  {FragId(3), {FragId(3), FragId(10)}}};
+  const auto mapped = cut::map_fragment_set(s, splits);
+  const std::vector<FragId> expected = {FragId(0), FragId(2), FragId(5), FragId(9), FragId(11), FragId(12)};
+  EXPECT_EQ(mapped, expected);
+}
+
+}  // namespace
+}  // namespace mtcut::test
