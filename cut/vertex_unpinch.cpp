@@ -6,13 +6,12 @@
 
 namespace mtcut::cut {
 
-PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& cls) {
+std::vector<VertId> find_pinching_vertices(const engine::TetMesh& mesh, const CutClassifier& cls) {
   std::vector<std::uint8_t> split(mesh.num_vertices(), 0);
   bool any = false;
   for (VertId v : cls.on_vertices())
     if (cls.state(v) == VertexState::kOnActive) split[v.index()] = 1, any = true;
-  PinchFix fix;
-  if (!any) return fix;
+  if (!any) return {};
   // Tets around each edge whose two ends are split.
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> around;
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
@@ -25,6 +24,7 @@ PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& cls) {
           around[lo << 32 | hi].push_back(static_cast<std::uint32_t>(t));
         }
   }
+  std::vector<VertId> out;
   for (const auto& [key, tets] : around) {
     const VertId a(static_cast<std::int32_t>(key >> 32)), b(static_cast<std::int32_t>(key & 0xffffffffu));
     // Each tet reaches the negative and/or positive side near the edge; tets
@@ -56,48 +56,23 @@ PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& cls) {
         while (parent[x] != x) x = parent[x] = parent[parent[x]];
         return x;
       };
-      // Two tets around the edge share a face (a, b, x). It joins their parts
-      // on this side when x is on this side, or on the cut with both tets on
-      // this side (then neither straddles, and both keep this side's copies).
+      // Two tets around the edge share a face (a, b, x); it joins their parts
+      // on this side when x is on this side (a face with x on the cut is cut).
       for (std::size_t i = 0; i < tets.size(); ++i)
         for (std::size_t j = i + 1; j < tets.size(); ++j)
-          for (VertId x : others[i]) {
-            if (x != others[j][0] && x != others[j][1]) continue;
-            if (!reach[i][side] || !reach[j][side]) continue;
-            if (cls.state(x) == state || is_on(cls.state(x))) parent[find(i)] = find(j);
-          }
-      std::unordered_map<std::size_t, std::size_t> size;  // component -> tets
-      for (std::size_t i = 0; i < tets.size(); ++i)
-        if (reach[i][side]) ++size[find(i)];
-      if (size.size() < 2) continue;
-      // Keep the largest part on this side; the tets of the others reach it
-      // through vertices near the plane: pull those onto the cut if they are
-      // near enough, else keep the edge's ends off it.
-      std::size_t keep = size.begin()->first;
-      for (const auto& [root, n] : size)
-        if (n > size[keep]) keep = root;
-      std::vector<VertId> pull;
-      bool near = true;
-      for (std::size_t i = 0; i < tets.size() && near; ++i) {
-        if (!reach[i][side] || find(i) == keep) continue;
-        for (VertId x : others[i]) {
-          if (cls.state(x) != state) continue;
-          const engine::Vec3& px = cls.positions()[x.index()];
-          const double gap = std::abs(cls.polygon().signed_distance(px));
-          near &= gap <= 4 * cls.snap() * (px - cls.positions()[a.index()]).norm() && !cls.veto_requested(x);
-          pull.push_back(x);
-        }
+          for (VertId x : others[i])
+            if ((x == others[j][0] || x == others[j][1]) && reach[i][side] && reach[j][side] && cls.state(x) == state)
+              parent[find(i)] = find(j);
+      std::size_t parts = 0;
+      for (std::size_t i = 0; i < tets.size(); ++i) parts += reach[i][side] && find(i) == i;
+      if (parts > 1) {
+        out.push_back(a);
+        out.push_back(b);
+        break;
       }
-      if (near && !pull.empty()) {
-        fix.pull_in.insert(fix.pull_in.end(), pull.begin(), pull.end());
-      } else {
-        fix.veto.push_back(a);
-        fix.veto.push_back(b);
-      }
-      break;
     }
   }
-  return fix;
+  return out;
 }
 
 std::size_t unpinch_vertices(engine::TetMesh& mesh, std::span<const VertId> candidates,

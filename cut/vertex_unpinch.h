@@ -22,18 +22,10 @@ namespace mtcut::cut {
 
 // Before the split: edges whose two ends the cut splits, and around which
 // one side of the cut would be in two parts touching only along the edge
-// (the tip of an earlier cut near the plane, its crack bent across it by
-// that cut's snapping). No copy per side fixes that. Either the vertices
-// that put the smaller parts on that side are near the plane, and pulling
-// them onto the cut removes those parts (the continuing stroke then follows
-// the old crack), or the edge's ends are kept off the cut. The cutter
-// applies the fix and classifies again.
-struct PinchFix {
-  std::vector<VertId> pull_in;  // snap onto the cut
-  std::vector<VertId> veto;     // keep off the cut
-  bool empty() const { return pull_in.empty() && veto.empty(); }
-};
-PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& classifier);
+// (the tip of an earlier cut lying in the plane while its crack crosses it).
+// No copy per side can fix that, so the cutter vetoes snapping for the
+// returned vertices (their ends) and classifies again.
+std::vector<VertId> find_pinching_vertices(const engine::TetMesh& mesh, const CutClassifier& classifier);
 
 // Unpinches the `candidates` of `mesh`. Copies are appended to the mesh and
 // to `made` (a copy of a vertex made by this cut copies its record); tets
