@@ -39,6 +39,7 @@ struct CutStats {
   std::size_t split_vertices = 0;    // vertices the cut passes through (a copy was made)
   std::size_t snapped_vertices = 0;  // vertices the cut was moved onto
   std::size_t vetoed_vertices = 0;   // kept off the cut to avoid pinching (vertex_unpinch.h)
+  std::size_t pulled_vertices = 0;   // pulled onto the cut to avoid pinching (vertex_unpinch.h)
   std::size_t unpinched_vertices = 0;  // extra copies where a star fell apart (vertex_unpinch.h)
   std::array<std::size_t, kCaseCount> per_case{};  // split tets per CutCase
   std::size_t pieces = 0;            // connected components after the cut (0: not counted)
@@ -60,7 +61,8 @@ struct MeshCutResult {
   std::vector<TetId> replacements;         // the tets replacing them; the old id comes first
   std::vector<TetId> relabeled_tets;       // tets given a vertex copy (may repeat)
   std::vector<NewVertex> new_vertices;     // in id order, from the old vertex count on
-  std::vector<VertId> snapped_vertices;    // vertices the cut was moved onto (split or not)
+  std::vector<VertId> snapped_vertices;    // vertices the cut was moved onto (and split)
+  std::vector<VertId> resided_vertices;    // on the plane to rounding, kept off the cut on their neighbours' side
 };
 
 // Cuts `mesh` by `polygon`. `table` may be shared between cuts (it caches

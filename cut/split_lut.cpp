@@ -70,16 +70,21 @@ class LutSplitter {
   // and faces.
   const std::vector<LabelPositions>& where() {
     if (where_.empty()) {
-      where_.push_back(reference_positions(c_, tr_));
+      where_.push_back(reference());
       std::mt19937_64 rng(0x5eed);
       for (int i = 0; i < (bends_ ? 32 : 12); ++i) where_.push_back(random_positions(c_, tr_, rng, !bends_ || i % 3 == 0));
     }
     return where_;
   }
 
+  const LabelPositions& reference() {
+    if (!reference_) reference_ = reference_positions(c_, tr_);
+    return *reference_;
+  }
+
   // Orients the tets in the reference realisation; true when they hold.
   bool holds(std::vector<Tet4>& tets) {
-    const LabelPositions& ref = where().front();
+    const LabelPositions& ref = reference();
     for (Tet4& t : tets)
       if (volume6(ref[t[0]], ref[t[1]], ref[t[2]], ref[t[3]]) < 0) std::swap(t[2], t[3]);
     if (!bends_) return true;
@@ -176,7 +181,7 @@ class LutSplitter {
   // A piece no cone fits, filled by search (piece_filler.h). Its boundary:
   // its faces, the bridge interfaces and S, each oriented away from it.
   std::optional<std::vector<Tet4>> fill(LabelSide side, const SurfaceFan& sf) {
-    const LabelPositions& ref = where().front();
+    const LabelPositions& ref = reference();
     Label other = 0;  // a point on the other side of the cut
     for (int v = 0; v < 4; ++v)
       if (is_strict(c_.vertex[v]) && side_of(c_.vertex[v]) != side) other = make_label(LabelKind::kVertex, v);
@@ -298,6 +303,7 @@ class LutSplitter {
   CutTrace tr_;
   bool bends_;
   std::vector<LabelPositions> where_;
+  std::optional<LabelPositions> reference_;
 };
 
 }  // namespace

@@ -1,7 +1,6 @@
 #include "cut/split_realisation.h"
 
 #include <cmath>
-#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -16,10 +15,11 @@ using engine::Vec3;
 
 struct Choices {
   std::array<Vec3, 4> corners;
-  std::array<double, 4> distance;                   // to the plane, signed by side (0 on it)
-  std::function<double()> edge_parameter;          // bent: where a crossing sits; empty: on the plane
-  std::function<double()> face_parameter;          // planar: along the section segment
-  std::function<std::array<double, 3>()> face_weights;  // bent: anywhere in the face
+  std::array<double, 4> distance;        // to the plane, signed by side (0 on it)
+  bool bent = false;                     // crossings and face points anywhere
+  std::array<double, 6> edge_parameter;  // bent: where each crossing sits
+  std::array<double, 4> face_parameter;  // planar: along each face's section segment
+  std::array<std::array<double, 3>, 4> face_weights;  // bent: where each face point sits
 };
 
 LabelPositions realise(const TetConfig& c, const CutTrace& tr, const Choices& ch) {
@@ -34,16 +34,15 @@ LabelPositions realise(const TetConfig& c, const CutTrace& tr, const Choices& ch
   for (int k = 0; k < 6; ++k) {
     if (!c.straddles(k)) continue;
     const int a = kTetEdges[k][0], b = kTetEdges[k][1];
-    const double t = ch.edge_parameter ? ch.edge_parameter()
-                                       : ch.distance[a] / (ch.distance[a] - ch.distance[b]);
+    const double t = ch.bent ? ch.edge_parameter[k] : ch.distance[a] / (ch.distance[a] - ch.distance[b]);
     crossing[k] = p[a] + t * (p[b] - p[a]);
     set(LabelKind::kEdge, k, crossing[k]);
   }
   for (int f = 0; f < 4; ++f) {
     if (!tr.face_point[f] && !tr.face_node[f]) continue;
     const auto& fv = kTetFaces[f];
-    if (ch.face_weights) {
-      const auto w = ch.face_weights();
+    if (ch.bent) {
+      const auto& w = ch.face_weights[f];
       set(LabelKind::kFace, f, w[0] * p[fv[0]] + w[1] * p[fv[1]] + w[2] * p[fv[2]]);
       continue;
     }
@@ -56,7 +55,7 @@ LabelPositions realise(const TetConfig& c, const CutTrace& tr, const Choices& ch
     }
     if (ends.size() != 2) throw std::logic_error("realise: a face point on a face the plane misses");
     if (!ends[0].second) std::swap(ends[0], ends[1]);
-    const double s = tr.face_node[f] ? 0.5 : ch.face_parameter();
+    const double s = tr.face_node[f] ? 0.5 : ch.face_parameter[f];
     set(LabelKind::kFace, f, ends[0].first + s * (ends[1].first - ends[0].first));
   }
   Vec3 centre = Vec3::Zero();
@@ -74,7 +73,7 @@ LabelPositions reference_positions(const TetConfig& c, const CutTrace& tr) {
     ch.distance[i] = c.vertex[i] == VertexState::kNeg ? -(0.8 + 0.17 * i)
                      : c.vertex[i] == VertexState::kPos ? 0.9 + 0.23 * i
                                                         : 0.0;
-  ch.face_parameter = [] { return 0.4; };
+  ch.face_parameter.fill(0.4);
   return realise(c, tr, ch);
 }
 
@@ -96,16 +95,15 @@ LabelPositions random_positions(const TetConfig& c, const CutTrace& tr, std::mt1
   };
   if (planar) {
     // Face points sit at least face_clamp (>= 0.05) from their segment's ends.
-    ch.face_parameter = [&] { return 0.05 + 0.9 * u(rng); };
+    for (double& s : ch.face_parameter) s = 0.05 + 0.9 * u(rng);
   } else {
-    ch.edge_parameter = parameter;
-    ch.face_weights = [&] {
-      std::array<double, 3> w;
+    ch.bent = true;
+    for (double& t : ch.edge_parameter) t = parameter();
+    for (auto& w : ch.face_weights) {
       double sum = 0;
       for (double& x : w) sum += x = parameter();
       for (double& x : w) x /= sum;
-      return w;
-    };
+    }
   }
   return realise(c, tr, ch);
 }

@@ -1,6 +1,8 @@
 #include "cut/split_table.h"
 
+#include <atomic>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -68,17 +70,39 @@ SplitRecipe make_recipe(const TetConfig& config, SplitScheme scheme) {
   return recipe;
 }
 
-SplitTable::SplitTable(SplitScheme scheme) : scheme_(scheme) {}
+struct SplitTable::Store {
+  std::mutex mutex;                            // guards generation
+  std::vector<std::atomic<std::int32_t>> index;  // (2^20) key -> recipe, -1 = not generated yet
+  std::deque<SplitRecipe> recipes;             // stable addresses
+
+  Store() : index(kKeyCount) {
+    for (auto& slot : index) slot.store(-1, std::memory_order_relaxed);
+  }
+};
+
+SplitTable::SplitTable(SplitScheme scheme) : scheme_(scheme) {
+  static Store lut, bielser;
+  store_ = scheme == SplitScheme::kLut ? &lut : &bielser;
+}
+
+std::size_t SplitTable::generated() const {
+  std::lock_guard<std::mutex> lock(store_->mutex);
+  return store_->recipes.size();
+}
 
 const SplitRecipe& SplitTable::recipe(const TetConfig& config) {
-  if (index_.empty()) index_.assign(kKeyCount, -1);
   const std::uint32_t key = config.key();
-  std::int32_t& slot = index_[key];
+  std::int32_t slot = store_->index[key].load(std::memory_order_acquire);
   if (slot < 0) {
-    recipes_.push_back(make_recipe(config, scheme_));
-    slot = static_cast<std::int32_t>(recipes_.size() - 1);
+    std::lock_guard<std::mutex> lock(store_->mutex);
+    slot = store_->index[key].load(std::memory_order_relaxed);
+    if (slot < 0) {
+      store_->recipes.push_back(make_recipe(config, scheme_));
+      slot = static_cast<std::int32_t>(store_->recipes.size() - 1);
+      store_->index[key].store(slot, std::memory_order_release);
+    }
   }
-  return recipes_[static_cast<std::size_t>(slot)];
+  return store_->recipes[static_cast<std::size_t>(slot)];
 }
 
 }  // namespace mtcut::cut

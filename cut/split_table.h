@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -33,19 +34,23 @@ void orient_recipe(const TetConfig& config, const CutTrace& trace, SplitRecipe& 
 // Generates the oriented recipe of `config` (must be cut).
 SplitRecipe make_recipe(const TetConfig& config, SplitScheme scheme);
 
+// A handle on the process-wide table of one scheme: recipes are generated
+// once per process whatever the number of tables (generation costs about
+// 0.1 ms per configuration, a split then costs one lookup). Thread-safe;
+// returned references stay valid for the life of the process.
 class SplitTable {
  public:
   explicit SplitTable(SplitScheme scheme = SplitScheme::kLut);
 
-  // The split of a cut configuration. Not thread-safe: it may generate.
   const SplitRecipe& recipe(const TetConfig& config);
   SplitScheme scheme() const { return scheme_; }
-  std::size_t generated() const { return recipes_.size(); }
+  // Configurations generated so far in this process, for this scheme.
+  std::size_t generated() const;
 
  private:
+  struct Store;
   SplitScheme scheme_;
-  std::vector<std::int32_t> index_;  // (2^20) key -> recipe, -1 = not generated yet
-  std::vector<SplitRecipe> recipes_;
+  Store* store_;
 };
 
 }  // namespace mtcut::cut

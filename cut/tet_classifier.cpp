@@ -90,8 +90,8 @@ CutCase TetConfig::cut_case() const {
 CutClassifier::CutClassifier(const CutPolygon& polygon, std::span<const Vec3> positions, const ClassifierDef& def)
     : polygon_(polygon),
       positions_(positions),
-      snap_(std::clamp(def.snap, ClassifierDef::kMinSnap, 0.45)),
-      face_clamp_(std::clamp(def.snap, 0.05, 0.45)),
+      snap_(ClassifierDef::effective_snap(def.snap)),
+      face_clamp_(ClassifierDef::face_clamp(def.snap)),
       info_(positions.size()) {}
 
 std::uint64_t CutClassifier::edge_key(VertId a, VertId b) {
@@ -107,8 +107,14 @@ std::int8_t CutClassifier::raw_side(VertId v) const {
 }
 
 std::int8_t CutClassifier::side_for_crossings(VertId v) const {
+  if (info_[v.index()].pulled) return 0;
   const std::int8_t raw = raw_side(v);
   return raw == 0 && info_[v.index()].vetoed ? 1 : raw;  // a vetoed vertex on the plane counts as positive
+}
+
+void CutClassifier::pull_in(VertId v) {
+  assert(touched_.empty());
+  if (!info_[v.index()].requested_off) info_[v.index()].pulled = true;
 }
 
 double CutClassifier::raw_parameter(VertId a, VertId b) const {
@@ -122,6 +128,7 @@ double CutClassifier::raw_parameter(VertId a, VertId b) const {
 void CutClassifier::veto(VertId v) {
   assert(touched_.empty());
   info_[v.index()].vetoed = true;
+  info_[v.index()].requested_off = true;
 }
 
 bool CutClassifier::add_candidate(const Tet& tet) {
@@ -130,10 +137,14 @@ bool CutClassifier::add_candidate(const Tet& tet) {
   for (int i = 0; i < 4; ++i) s[i] = side_for_crossings(tet[i]);
   if (s[0] != 0 && s[0] == s[1] && s[1] == s[2] && s[2] == s[3]) return false;
 
+  std::array<double, 4> d;
+  for (int i = 0; i < 4; ++i) d[i] = polygon_.signed_distance(positions_[tet[i].index()]);
   for (int i = 0; i < 4; ++i) {
     VertexInfo& info = info_[tet[i].index()];
     if (info.reach == 0) touched_.push_back(tet[i]);
     if (s[i] == 0) info.on = true;  // vetoed vertices on the plane count as positive (s = 1)
+    for (int j = 0; j < 4; ++j)
+      if (j != i) info.lean += d[j];
   }
   for (int k = 0; k < 6; ++k) {
     const VertId a = tet[kTetEdges[k][0]], b = tet[kTetEdges[k][1]];
@@ -155,19 +166,35 @@ bool CutClassifier::add_candidate(const Tet& tet) {
   return true;
 }
 
+void CutClassifier::keep_off(VertId v) {
+  VertexInfo& info = info_[v.index()];
+  info.vetoed = true;
+  const double d = polygon_.signed_distance(positions_[v.index()]);
+  // On the plane to rounding: the side its neighbours are on.
+  if (raw_side(v) == 0 || std::abs(d) <= 1e-9 * info.reach) {
+    info.kept_side = info.lean < 0 ? -1 : 1;
+    if (info.kept_side != raw_side(v)) resided_.push_back(v);
+  }
+}
+
 void CutClassifier::finalize() {
   assert(!finalized_);
   finalized_ = true;
   for (VertId v : touched_) {
     VertexInfo& info = info_[v.index()];
+    if (info.vetoed) keep_off(v);
     if (!info.on) continue;
     const Vec3& p = positions_[v.index()];
-    info.active = polygon_.projects_inside(p) >= 0 || polygon_.distance_outside(p) <= snap_ * info.reach;
+    // The margin covers face points of an earlier cut, which sit up to
+    // face_clamp of their segment off its outline, so that the next stroke
+    // continuing the incision splits them.
+    info.active = info.pulled || polygon_.projects_inside(p) >= 0 ||
+                  polygon_.distance_outside(p) <= ClassifierDef::margin_fraction(snap_) * info.reach;
     if (!info.active) {
       // On the plane but off the polygon: not split; it stays on its side
-      // (positive when exactly on the plane) and cut points keep off it.
+      // and cut points keep off it.
       info.on = false;
-      info.vetoed = true;
+      keep_off(v);
       continue;
     }
     on_vertices_.push_back(v);
@@ -177,6 +204,7 @@ void CutClassifier::finalize() {
 VertexState CutClassifier::state(VertId v) const {
   const VertexInfo& info = info_[v.index()];
   if (finalized_ && info.on) return VertexState::kOnActive;
+  if (info.kept_side != 0) return info.kept_side < 0 ? VertexState::kNeg : VertexState::kPos;
   // Exactly on the plane but kept off the cut, or never part of a candidate
   // (far from the cut): positive.
   return raw_side(v) < 0 ? VertexState::kNeg : VertexState::kPos;
@@ -184,20 +212,19 @@ VertexState CutClassifier::state(VertId v) const {
 
 bool CutClassifier::snapped(VertId v) const {
   const VertexInfo& info = info_[v.index()];
-  return info.on && info.raw != 0;
+  return info.on && (info.raw != 0 || info.pulled);
 }
 
 bool CutClassifier::vetoed(VertId v) const { return info_[v.index()].vetoed; }
+bool CutClassifier::veto_requested(VertId v) const { return info_[v.index()].requested_off; }
 
 double CutClassifier::crossing_parameter(VertId a, VertId b) const {
   auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
   if (fresh) it->second.t = raw_parameter(a, b);  // an edge at a vertex kept off the plane
-  // A vertex kept off the cut keeps the cut point `snap` away from itself.
-  const VertId lo = a < b ? a : b, hi = a < b ? b : a;
-  double t = it->second.t;
-  if (info_[lo.index()].vetoed) t = std::max(t, snap_);
-  if (info_[hi.index()].vetoed) t = std::min(t, 1 - snap_);
-  return t;
+  // Every cut point stays `snap` away from the edge's ends: snapping makes
+  // that so for the ends on the cut; an end kept off it, or sided by its
+  // neighbours while on the plane, keeps the point away this way.
+  return std::clamp(it->second.t, snap_, 1 - snap_);
 }
 
 bool CutClassifier::crossing_covered(VertId a, VertId b) const {
@@ -205,7 +232,9 @@ bool CutClassifier::crossing_covered(VertId a, VertId b) const {
   if (fresh) it->second.t = raw_parameter(a, b);
   if (it->second.covered < 0) {
     const VertId lo = a < b ? a : b, hi = a < b ? b : a;
-    it->second.covered = polygon_.line_crossing(positions_[lo.index()], positions_[hi.index()]) > 0 ? 1 : 0;
+    // Closed: a crossing on the outline is cut, so strokes sharing an edge
+    // leave nothing between them.
+    it->second.covered = polygon_.line_crossing(positions_[lo.index()], positions_[hi.index()]) >= 0 ? 1 : 0;
   }
   return it->second.covered == 1;
 }

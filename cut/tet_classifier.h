@@ -22,13 +22,16 @@
 //                  which keeps such vertices off the cut instead (below).
 // A vertex is "on" when it is exactly on the plane, or when a straddling edge
 // of a candidate tet meets the plane within `snap` (a fraction of the edge)
-// of it, and it projects into the polygon grown by `snap` times its longest
-// edge. The vertex is not moved: the cut surface bends through it. A vertex
+// of it, and it projects into the polygon grown by (snap + face_clamp) times
+// its longest edge (so that a stroke continuing an incision splits the face
+// points the previous stroke left near its outline). The vertex is not moved: the cut surface bends through it. A vertex
 // that would be on but lies off the polygon (or is vetoed) is kept off the
-// cut: it keeps its side (positive when exactly on the plane) and cut points
-// stay `snap` away from it. Hence every cut point lies in [snap, 1 - snap]
+// cut: it keeps its side, or when it lies on the plane (to rounding) the side
+// its neighbours lean to (a copy made by an earlier cut in this plane goes
+// with its tets), and cut points stay `snap` away from it. Hence every cut point lies in [snap, 1 - snap]
 // of its edge, and no sliver is made (DESIGN.md, "Degenerate contacts").
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -77,6 +80,12 @@ struct TetConfig {
 struct ClassifierDef {
   double snap = 0.15;  // fraction of an edge; raised to kMinSnap
   static constexpr double kMinSnap = 1e-6;
+
+  static double effective_snap(double snap) { return std::clamp(snap, kMinSnap, 0.45); }
+  static double face_clamp(double snap) { return std::clamp(snap, 0.25, 0.45); }
+  // How far off the polygon (times the vertex's longest edge) a vertex on
+  // the plane may be and still be split.
+  static double margin_fraction(double snap) { return effective_snap(snap) + face_clamp(snap); }
 };
 
 class CutClassifier {
@@ -90,6 +99,9 @@ class CutClassifier {
   // it counts as positive. The cutter vetoes vertices whose split would pinch
   // the mesh (two parts of one side touching along an edge).
   void veto(VertId v);
+  // Phase 0 (optional): `v` is on the cut and split, however far its edges
+  // meet the plane and however far off the polygon it is (not after veto()).
+  void pull_in(VertId v);
 
   // Phase 1. Declares a tet that may be cut; returns false (and forgets it)
   // when all its vertices are strictly on one side of the plane.
@@ -99,8 +111,12 @@ class CutClassifier {
 
   VertexState state(VertId v) const;
   bool snapped(VertId v) const;                   // "on" only because of snapping
-  bool vetoed(VertId v) const;
+  bool vetoed(VertId v) const;          // kept off the cut (requested or found off the polygon)
+  bool veto_requested(VertId v) const;  // by veto()
   const std::vector<VertId>& on_vertices() const { return on_vertices_; }  // after finalize
+  // Vertices on the plane (to rounding) but kept off the cut, sided by their
+  // neighbours rather than by the sign of their distance (after finalize).
+  const std::vector<VertId>& resided_vertices() const { return resided_; }
 
   // Crossing of the edge (a, b): parameter from the lower id, and whether the
   // polygon crosses it (exact; cached). Only for edges that straddle.
@@ -136,6 +152,10 @@ class CutClassifier {
     bool on = false;           // exactly on the plane, or snapped
     bool active = false;
     bool vetoed = false;       // kept off the cut
+    bool requested_off = false;  // by veto()
+    bool pulled = false;       // on the cut by request
+    std::int8_t kept_side = 0; // side of a vertex kept off the cut (0: its raw side)
+    double lean = 0;           // sum of its candidate neighbours' distances to the plane
     double reach = 0;          // longest candidate edge at the vertex
   };
   struct EdgeInfo {
@@ -146,6 +166,7 @@ class CutClassifier {
   std::int8_t raw_side(VertId v) const;
   std::int8_t side_for_crossings(VertId v) const;
   double raw_parameter(VertId a, VertId b) const;
+  void keep_off(VertId v);
   // The two ends of the face's section segment (point, weights on `face`,
   // active), or false when the face is not crossed by the plane.
   struct SectionEnd {
@@ -164,6 +185,7 @@ class CutClassifier {
   mutable std::unordered_map<std::uint64_t, EdgeInfo> edges_;
   std::vector<VertId> touched_;            // vertices of candidates
   std::vector<VertId> on_vertices_;
+  std::vector<VertId> resided_;
 };
 
 }  // namespace mtcut::cut

@@ -6,25 +6,25 @@
 
 namespace mtcut::cut {
 
-std::vector<VertId> find_pinching_vertices(const engine::TetMesh& mesh, const CutClassifier& cls) {
+PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& cls, const std::vector<std::uint32_t>& nearby) {
   std::vector<std::uint8_t> split(mesh.num_vertices(), 0);
   bool any = false;
   for (VertId v : cls.on_vertices())
     if (cls.state(v) == VertexState::kOnActive) split[v.index()] = 1, any = true;
-  if (!any) return {};
+  PinchFix fix;
+  if (!any) return fix;
   // Tets around each edge whose two ends are split.
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> around;
-  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+  for (std::uint32_t t : nearby) {
     const engine::Tet& tet = mesh.tets[t];
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
         if (split[tet[a].index()] && split[tet[b].index()]) {
           const auto lo = static_cast<std::uint64_t>(std::min(tet[a], tet[b]).value);
           const auto hi = static_cast<std::uint64_t>(std::max(tet[a], tet[b]).value);
-          around[lo << 32 | hi].push_back(static_cast<std::uint32_t>(t));
+          around[lo << 32 | hi].push_back(t);
         }
   }
-  std::vector<VertId> out;
   for (const auto& [key, tets] : around) {
     const VertId a(static_cast<std::int32_t>(key >> 32)), b(static_cast<std::int32_t>(key & 0xffffffffu));
     // Each tet reaches the negative and/or positive side near the edge; tets
@@ -56,27 +56,53 @@ std::vector<VertId> find_pinching_vertices(const engine::TetMesh& mesh, const Cu
         while (parent[x] != x) x = parent[x] = parent[parent[x]];
         return x;
       };
-      // Two tets around the edge share a face (a, b, x); it joins their parts
-      // on this side when x is on this side (a face with x on the cut is cut).
+      // Two tets around the edge share a face (a, b, x). It joins their parts
+      // on this side when x is on this side, or on the cut with both tets on
+      // this side (then neither straddles, and both keep this side's copies).
       for (std::size_t i = 0; i < tets.size(); ++i)
         for (std::size_t j = i + 1; j < tets.size(); ++j)
-          for (VertId x : others[i])
-            if ((x == others[j][0] || x == others[j][1]) && reach[i][side] && reach[j][side] && cls.state(x) == state)
-              parent[find(i)] = find(j);
-      std::size_t parts = 0;
-      for (std::size_t i = 0; i < tets.size(); ++i) parts += reach[i][side] && find(i) == i;
-      if (parts > 1) {
-        out.push_back(a);
-        out.push_back(b);
-        break;
+          for (VertId x : others[i]) {
+            if (x != others[j][0] && x != others[j][1]) continue;
+            if (!reach[i][side] || !reach[j][side]) continue;
+            if (cls.state(x) == state || is_on(cls.state(x))) parent[find(i)] = find(j);
+          }
+      std::unordered_map<std::size_t, std::size_t> size;  // component -> tets
+      for (std::size_t i = 0; i < tets.size(); ++i)
+        if (reach[i][side]) ++size[find(i)];
+      if (size.size() < 2) continue;
+      // Keep the largest part on this side; the tets of the others reach it
+      // through vertices near the plane: pull those onto the cut if they are
+      // near enough, else keep the edge's ends off it.
+      std::size_t keep = size.begin()->first;
+      for (const auto& [root, n] : size)
+        if (n > size[keep]) keep = root;
+      std::vector<VertId> pull;
+      bool near = true;
+      for (std::size_t i = 0; i < tets.size() && near; ++i) {
+        if (!reach[i][side] || find(i) == keep) continue;
+        for (VertId x : others[i]) {
+          if (cls.state(x) != state) continue;
+          const engine::Vec3& px = cls.positions()[x.index()];
+          const double gap = std::abs(cls.polygon().signed_distance(px));
+          near &= gap <= 4 * cls.snap() * (px - cls.positions()[a.index()]).norm() && !cls.veto_requested(x);
+          pull.push_back(x);
+        }
       }
+      if (near && !pull.empty()) {
+        fix.pull_in.insert(fix.pull_in.end(), pull.begin(), pull.end());
+      } else {
+        fix.veto.push_back(a);
+        fix.veto.push_back(b);
+      }
+      break;
     }
   }
-  return out;
+  return fix;
 }
 
 std::size_t unpinch_vertices(engine::TetMesh& mesh, std::span<const VertId> candidates,
-                             std::vector<NewVertex>& made, std::vector<engine::TetId>& changed) {
+                             const std::vector<std::uint32_t>& nearby, std::vector<NewVertex>& made,
+                             std::vector<engine::TetId>& changed) {
   const std::size_t first_made = made.empty() ? mesh.num_vertices() : made.front().id.index();
   std::vector<std::int32_t> slot(mesh.num_vertices(), -1);
   std::vector<VertId> vertices;
@@ -86,9 +112,9 @@ std::size_t unpinch_vertices(engine::TetMesh& mesh, std::span<const VertId> cand
       vertices.push_back(v);
     }
   std::vector<std::vector<std::uint32_t>> star(vertices.size());
-  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+  for (std::uint32_t t : nearby)
     for (VertId v : mesh.tets[t])
-      if (slot[v.index()] >= 0) star[static_cast<std::size_t>(slot[v.index()])].push_back(static_cast<std::uint32_t>(t));
+      if (slot[v.index()] >= 0) star[static_cast<std::size_t>(slot[v.index()])].push_back(t);
 
   std::size_t copies = 0;
   for (std::size_t i = 0; i < vertices.size(); ++i) {

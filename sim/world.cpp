@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <optional>
+#include <unordered_map>
 
+#include "cut/cut_polygon.h"
 #include "sim/forces.h"
+#include "sim/rest_space_cut.h"
 #include "sim/state_transfer.h"
 
 namespace mtcut::sim {
@@ -25,6 +29,18 @@ SpringModel build_model(const engine::Mt& mt, const engine::Frontier& frontier, 
 }
 
 }  // namespace
+
+// The parents of the vertices the cutter made, by vertex id.
+struct OriginIndex {
+  std::unordered_map<std::int32_t, VertexOrigin> by_vertex;
+  OriginLookup lookup() const {
+    return [this](VertId v) -> std::optional<VertexOrigin> {
+      const auto it = by_vertex.find(v.value);
+      if (it == by_vertex.end()) return std::nullopt;
+      return it->second;
+    };
+  }
+};
 
 World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt)), bvh_(mt_) {
   frontier_ = def_.lod.enabled ? engine::Frontier::coarsest(mt_) : engine::Frontier::finest(mt_);
@@ -48,10 +64,43 @@ Environment World::environment_for(const ScalpelPose& pose) const {
   return env;
 }
 
-void World::rebuild_model_from(const DeformationSnapshot& snapshot) {
+void World::rebuild_model_from(const DeformationSnapshot& snapshot, const OriginIndex* origins) {
   model_ = build_model(mt_, frontier_, def_);
-  state_ = transfer_state(mt_, bvh_, snapshot, model_);
+  state_ = transfer_state(mt_, bvh_, snapshot, model_, origins ? origins->lookup() : OriginLookup{});
   stepper_.reset_warm_start();
+}
+
+void World::run_cut_stage(const ScalpelPose& pose, FrameMetrics& m) {
+  // The stroke's polygons: a straight part is cut once it ends (the blade
+  // turned or left the tissue), on the tissue's current shape.
+  std::vector<cut::CutPolygon> polygons;
+  if (pose.engaged) {
+    polygons = stroke_.add(pose.base, pose.tip);
+  } else if (stroke_.active()) {
+    polygons = stroke_.finish();
+  }
+  if (!polygons.empty()) {
+    // Cut in rest space (rest_space_cut.h says why).
+    std::vector<Vec3> rest(model_.num_particles());
+    for (std::size_t p = 0; p < rest.size(); ++p) rest[p] = mt_.position(model_.particle_vertex[p]);
+    for (const auto& polygon : polygons) cutter_.submit(mt_, rest_space_polygon(polygon, rest, state_.x), {});
+    m.cuts_started = polygons.size();
+  }
+  if (!cutter_.frozen()) return;
+  const DeformationSnapshot snapshot = take_snapshot(mt_, frontier_, model_, state_);
+  const cut::CutBudget budget = def_.cut_budget.unit == CutBudgetDef::Unit::kTets
+                                    ? cut::CutBudget::units(static_cast<std::size_t>(def_.cut_budget.amount))
+                                    : cut::CutBudget::ms(def_.cut_budget.amount);
+  auto result = cutter_.run(mt_, bvh_, frontier_, budget);
+  frontier_ = cut::map_frontier(mt_, frontier_, result.changes.fragment_splits);
+  m.cut_tets = result.changes.replaced.size();
+  if (result.pieces) pieces_ = result.pieces->count;
+  if (!result.changes.replaced.empty() || !result.changes.made_vertices.empty()) {
+    OriginIndex origins;
+    for (const auto& made : result.changes.made_vertices)
+      origins.by_vertex[made.id.value] = VertexOrigin{made.source.parents, made.source.weights};
+    rebuild_model_from(snapshot, &origins);
+  }
 }
 
 const FrameMetrics& World::step(const ScalpelPose& pose) {
@@ -59,14 +108,16 @@ const FrameMetrics& World::step(const ScalpelPose& pose) {
   FrameMetrics m;
   m.frame = frame_;
 
-  // Stage 2, cut: the blade's sweep from last_pose_ to pose is cut by the
-  // time-critical cutter once it lands (issue 5); until then nothing is cut.
+  // Stage 2, cut.
   const auto cut_start = Clock::now();
+  run_cut_stage(pose, m);
   m.cut_ms = ms_since(cut_start);
+  m.frozen = cutter_.frozen();
+  m.cut_jobs_pending = cutter_.progress().jobs_pending;
 
   // Stage 3, lod.
   const auto lod_start = Clock::now();
-  if (def_.lod.enabled) {
+  if (def_.lod.enabled && !cutter_.frozen()) {
     const std::uint64_t version = frontier_.version();
     simulated_tets_.assign(frontier_.tets().begin(), frontier_.tets().end());
     const auto stats = refiner_.update(mt_, error_field(pose.tip), frontier_);

@@ -5,8 +5,14 @@
 // frontier in use, the spring model built on it and its state, and the
 // scalpel. step() runs the frame as named stages, each timed:
 //   1. scalpel   read the pose for this frame;
-//   2. cut       sweep the engaged blade into cut polygons, run the cutter
-//                within its budget (the MT cut lands with the cutter);
+//   2. cut       merge the engaged blade's poses into one cut polygon per
+//                straight part of the stroke (cut/stroke_sweep.h says why),
+//                carry each from the deformed tissue to rest space
+//                (rest_space_cut.h says why), queue it, run the time-critical
+//                cutter within its budget, map the frontier through the
+//                fragments it split, rebuild the springs and carry the state
+//                over (cut vertices from their parents); a piece the cut
+//                separates has no spring left to the rest and falls;
 //   3. lod       unless the cutter froze it, move the frontier toward the
 //                error field around the blade tip (incrementally), rebuild
 //                the springs on it and carry the state over;
@@ -19,6 +25,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "cut/mt/time_critical_cutter.h"
+#include "cut/stroke_sweep.h"
 #include "engine/mt/frontier.h"
 #include "engine/mt/mt.h"
 #include "engine/mt/selective_refinement.h"
@@ -37,6 +45,10 @@ struct FrameMetrics {
   double cut_ms = 0, lod_ms = 0, physics_ms = 0, total_ms = 0;
   std::size_t frontier_tets = 0, frontier_vertices = 0, springs = 0;
   std::size_t lod_changes = 0;     // fragments added or removed this frame
+  std::size_t cuts_started = 0;    // cut polygons the blade's stroke gave this frame
+  std::size_t cut_tets = 0;        // MT tets the cutter replaced this frame
+  std::size_t cut_jobs_pending = 0;
+  bool frozen = false;             // the cutter held the resolution this frame
   int cg_iterations = 0;
   bool step_refused = false;
 };
@@ -57,6 +69,9 @@ class World {
   double time() const { return time_; }
   std::uint64_t frame() const { return frame_; }
   std::uint64_t nan_events() const { return stepper_.refused_steps(); }
+  // Connected pieces of the object (1 until a cut separates it).
+  std::size_t pieces() const { return pieces_; }
+  const cut::TimeCriticalCutter& cutter() const { return cutter_; }
   const FrameMetrics& last_frame() const { return last_; }
 
   // Deformed position of every MT vertex (visible: simulated; hidden:
@@ -73,7 +88,9 @@ class World {
  private:
   engine::ErrorField error_field(const Vec3& focus) const;
   // Rebuilds springs on the current frontier and carries the state from `snapshot`.
-  void rebuild_model_from(const struct DeformationSnapshot& snapshot);
+  void rebuild_model_from(const struct DeformationSnapshot& snapshot, const struct OriginIndex* origins = nullptr);
+  // Stage 2: queue the blade's sweep, run the cutter, follow its changes.
+  void run_cut_stage(const ScalpelPose& pose, FrameMetrics& m);
   Environment environment_for(const ScalpelPose& pose) const;
 
   WorldDef def_;
@@ -85,6 +102,9 @@ class World {
   SpringState state_;
   Stepper stepper_;
   std::vector<engine::TetId> simulated_tets_;  // the frontier's tets before this frame's LOD move
+  cut::StrokeSweep stroke_;  // the engaged blade's poses, merged into cut polygons
+  cut::TimeCriticalCutter cutter_;
+  std::size_t pieces_ = 1;
   ScalpelPose last_pose_;
   double time_ = 0;
   std::uint64_t frame_ = 0;

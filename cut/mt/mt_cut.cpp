@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <iterator>
 #include <chrono>
 #include <numeric>
 #include <random>
@@ -121,6 +122,29 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
   std::vector<std::uint8_t> candidate(found.size(), 0);
   for (std::size_t i = 0; i < found.size(); ++i) candidate[i] = classifier_.add_candidate(mt.tet(found[i]));
   classifier_.finalize();
+  // A vertex the cut passes through may lie off the polygon's box (up to the
+  // classifier's margin); every tet holding it must move onto its copy, so
+  // add the tets around each such vertex (they are not candidates: one that
+  // the cut crosses overlaps the polygon's box and was found already).
+  {
+    std::vector<TetId> around;
+    for (VertId v : classifier_.on_vertices()) {
+      if (classifier_.state(v) != VertexState::kOnActive) continue;
+      engine::Aabb at;
+      at.extend(mt.position(v));
+      bvh.for_each_overlapping(mt, at, [&](TetId t) {
+        const Tet& tet = mt.tet(t);
+        if (std::find(tet.begin(), tet.end(), v) != tet.end()) around.push_back(t);
+        return true;
+      });
+    }
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    std::vector<TetId> extra;
+    std::set_difference(around.begin(), around.end(), found.begin(), found.end(), std::back_inserter(extra));
+    found.insert(found.end(), extra.begin(), extra.end());
+    candidate.resize(found.size(), 0);
+  }
 
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Tet& tet = mt.tet(found[i]);

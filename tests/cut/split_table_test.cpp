@@ -95,10 +95,16 @@ TEST(SplitTable, CachesOneRecipePerConfiguration) {
   TetConfig c;
   c.vertex = {VertexState::kNeg, VertexState::kPos, VertexState::kPos, VertexState::kPos};
   c.covered = 0b000111;
+  const std::size_t before = table.generated();
   const SplitRecipe& a = table.recipe(c);
+  const std::size_t after = table.generated();
+  EXPECT_LE(after, before + 1);
   const SplitRecipe& b = table.recipe(c);
   EXPECT_EQ(&a, &b);
-  EXPECT_EQ(table.generated(), 1u);
+  EXPECT_EQ(table.generated(), after);
+  // Tables of one scheme share the recipes.
+  SplitTable other;
+  EXPECT_EQ(&other.recipe(c), &a);
   EXPECT_EQ(a.tets.size(), 4u);
 }
 

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+
 #include "engine/mesh_loader.h"
 #include "engine/mt/mt_builder.h"
 
@@ -91,6 +94,105 @@ TEST(World, DisengagedBladePushesTissue) {
     if (x.z() > 0.025) closest = std::min(closest, d.norm());
   }
   EXPECT_GE(closest, def.tool_radius - 1e-9);
+}
+
+// A stroke through the front end of the organ (fixed at its back, on a
+// floor), from y = -6 cm to +6 cm at x = 4 cm in `seconds`, engaged; then the
+// blade disengages where it is.
+ScalpelPath flap_stroke(double seconds) {
+  std::vector<ScalpelKeyframe> keys = {
+      {0.0, {Vec3(0.04, -0.06, 0.06), Vec3(0.04, -0.06, -0.07), true}},
+      {seconds, {Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), true}},
+      {seconds + 1e-3, {Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), false}}};
+  return ScalpelPath(keys);
+}
+
+WorldDef flap_def() {
+  WorldDef def = organ_def();
+  def.environment.floor = Plane{Vec3(0, 0, 1), -0.05};
+  return def;
+}
+
+// The MT as sorted corner-id tuples of its live tets and its positions.
+std::pair<std::vector<std::array<std::int32_t, 4>>, std::vector<Vec3>> mt_contents(const engine::Mt& mt) {
+  std::vector<std::array<std::int32_t, 4>> tets;
+  for (std::size_t t = 0; t < mt.num_tets(); ++t) {
+    if (!mt.alive(engine::TetId(t))) continue;
+    std::array<std::int32_t, 4> v;
+    for (int i = 0; i < 4; ++i) v[i] = mt.tet(engine::TetId(t))[i].value;
+    std::sort(v.begin(), v.end());
+    tets.push_back(v);
+  }
+  std::sort(tets.begin(), tets.end());
+  return {tets, std::vector<Vec3>(mt.positions().begin(), mt.positions().end())};
+}
+
+TEST(World, StrokeCutsOffAFlapThatFallsToTheFloor) {
+  World world(organ_mt(3000), flap_def());
+  const ScalpelPath path = flap_stroke(0.5);
+  const std::size_t vertices_before = world.mt().num_vertices();
+  for (int f = 0; f < 120; ++f) {
+    const FrameMetrics& m = world.step(path.pose_at(world.time()));
+    if (m.cut_tets > 0 || f % 20 == 0) {
+      const auto report = world.validate();
+      ASSERT_TRUE(report.ok()) << "frame " << f << ": " << report.summary();
+    }
+  }
+  EXPECT_GT(world.mt().num_vertices(), vertices_before);
+  EXPECT_EQ(world.pieces(), 2u);
+  EXPECT_EQ(world.nan_events(), 0u);
+  // The flap (rest x > 4 cm) lies on the floor; the part held at the back
+  // (rest x < -6 cm) did not move.
+  double flap_lowest = 1, flap_mean_z = 0;
+  std::size_t flap = 0;
+  for (std::size_t p = 0; p < world.model().num_particles(); ++p) {
+    const Vec3& rest = world.mt().position(world.model().particle_vertex[p]);
+    const Vec3& x = world.state().x[p];
+    if (rest.x() > 0.045) {
+      flap_lowest = std::min(flap_lowest, x.z());
+      flap_mean_z += x.z();
+      ++flap;
+    }
+    if (rest.x() < -0.065) {
+      EXPECT_EQ(x, rest);
+    }
+  }
+  ASSERT_GT(flap, 0u);
+  flap_mean_z /= static_cast<double>(flap);
+  EXPECT_NEAR(flap_lowest, -0.05, 0.002);
+  EXPECT_LT(flap_mean_z, -0.03);  // the flap's rest centre is near z = 0
+}
+
+TEST(World, TinyCutBudgetEndsWithTheSameMtAndFreezesTheFrontier) {
+  const ScalpelPath path = flap_stroke(0.3);
+  // On the finest frontier only the root is visible: every other
+  // fragment's job waits for later frames under a small budget.
+  WorldDef def = flap_def();
+  def.lod.enabled = false;
+  WorldDef tiny_def = def;
+  tiny_def.cut_budget = {CutBudgetDef::Unit::kTets, 20};
+  World unlimited(organ_mt(2000), def), tiny(organ_mt(2000), tiny_def);
+  int frozen_frames = 0;
+  for (int f = 0; f < 80; ++f) {
+    unlimited.step(path.pose_at(unlimited.time()));
+    const std::size_t tets_before = tiny.frontier().tets().size();
+    const std::uint64_t version = tiny.frontier().version();
+    const FrameMetrics& m = tiny.step(path.pose_at(tiny.time()));
+    if (m.frozen) {
+      ++frozen_frames;
+      EXPECT_EQ(m.lod_changes, 0u);
+      // Only the cutter changed the frontier: it is not a refine/coarsen.
+      if (m.cut_tets == 0) {
+        EXPECT_EQ(tiny.frontier().version(), version);
+        EXPECT_EQ(tiny.frontier().tets().size(), tets_before);
+      }
+    }
+  }
+  EXPECT_GT(frozen_frames, 3);  // the hidden fragments' jobs waited
+  EXPECT_FALSE(tiny.cutter().frozen());  // the queue drained
+  EXPECT_TRUE(mt_contents(tiny.mt()) == mt_contents(unlimited.mt()));
+  EXPECT_EQ(tiny.pieces(), unlimited.pieces());
+  EXPECT_TRUE(tiny.validate().ok());
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cut/mt/mt_pieces.h"
+#include "cut/stroke_sweep.h"
 #include "tests/cut/mt/mt_cut_test_util.h"
 
 namespace mtcut::test {
@@ -192,6 +193,59 @@ TEST(MtCut, SplitTetsKeepBirthDeathAndNewTetsPerSplitTet) {
   EXPECT_LT(per, 6.0);
   // The BVH follows: every live tet is found where it is.
   EXPECT_EQ(bvh.size(), mt.num_live_tets());
+}
+
+}  // namespace
+}  // namespace mtcut::test
+
+namespace mtcut::test {
+namespace {
+
+// A blade spanning the object in z, drawn across it in y over `steps`
+// frames at x = x0 (rolling by `turn` radians about y per frame), merged
+// into cut polygons as the World does (stroke_sweep.h): after every cut the
+// MT is valid. Returns the pieces at the end.
+std::size_t stroke_through(const std::string& name, int steps, double turn) {
+  Mt mt = cut_test_mt(name);
+  engine::TetBvh bvh(mt);
+  cut::SplitTable table;
+  const engine::Aabb box = mt_box(mt);
+  const Vec3 size = box.hi - box.lo, centre = box.center();
+  const auto blade = [&](int i) {
+    const double y = box.lo.y() - 0.1 * size.y() + 1.2 * size.y() * i / steps;
+    const double a = turn * i;
+    const Vec3 half = 0.7 * size.z() * Vec3(std::sin(a), 0, std::cos(a));
+    const Vec3 mid(centre.x() + 0.23 * size.x(), y, centre.z());
+    return std::pair<Vec3, Vec3>(mid + half, mid - half);
+  };
+  cut::StrokeSweep stroke;
+  std::size_t cuts = 0;
+  const auto cut_all = [&](const std::vector<CutPolygon>& polygons, int frame) {
+    for (const CutPolygon& polygon : polygons) {
+      cut_mt(mt, bvh, polygon, {}, CutMtOptions{}, &table);
+      ++cuts;
+      const auto report = mt.validate();
+      EXPECT_TRUE(report.ok()) << name << " frame " << frame << ": " << report.summary();
+    }
+  };
+  for (int i = 0; i <= steps; ++i) {
+    const auto [base, tip] = blade(i);
+    cut_all(stroke.add(base, tip), i);
+  }
+  cut_all(stroke.finish(), steps + 1);
+  EXPECT_GT(cuts, 0u);
+  return cut::find_pieces(mt).count;
+}
+
+TEST(MtCut, StraightStrokeSeparatesAndKeepsTheMtValid) {
+  EXPECT_EQ(stroke_through("ellipsoid", 30, 0.0), 2u);
+  EXPECT_EQ(stroke_through("liver", 30, 0.0), 2u);
+}
+
+TEST(MtCut, TurningStrokeKeepsTheMtValid) {
+  // Each turn ends a part; parts do not share a blade segment.
+  stroke_through("ellipsoid", 20, 0.03);
+  stroke_through("liver", 20, 0.03);
 }
 
 }  // namespace

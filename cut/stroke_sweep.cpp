@@ -1,0 +1,164 @@
+#include "cut/stroke_sweep.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+namespace mtcut::cut {
+namespace {
+
+// The best plane through points: centroid and orthonormal axes (u, v in the
+// plane, n its normal), by principal components.
+struct Plane {
+  Vec3 origin, u, v, n;
+};
+
+Plane fit_plane(const std::vector<Vec3>& points) {
+  Vec3 c = Vec3::Zero();
+  for (const Vec3& p : points) c += p;
+  c /= static_cast<double>(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : points) cov += (p - c) * (p - c).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);  // eigenvalues ascending
+  const Vec3 n = eig.eigenvectors().col(0).normalized();
+  const Vec3 u = eig.eigenvectors().col(2).normalized();
+  return {c, u, n.cross(u), n};
+}
+
+double diameter(const std::vector<Vec3>& points) {
+  Vec3 lo = points.front(), hi = points.front();
+  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return (hi - lo).norm();
+}
+
+double cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+// Counter-clockwise convex hull (monotone chain, exact on the given
+// doubles), then without corners that are collinear with their neighbours
+// to within `eps` (twice an area): the blade's poses along a straight stroke
+// are collinear only up to rounding.
+std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> p, double eps) {
+  std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return p;
+  std::vector<Eigen::Vector2d> hull(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross2(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross2(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  hull.resize(k - 1);
+  for (bool removed = true; removed && hull.size() > 3;) {
+    removed = false;
+    for (std::size_t i = 0; i < hull.size() && hull.size() > 3; ++i) {
+      const std::size_t n = hull.size();
+      if (cross2(hull[(i + n - 1) % n], hull[i], hull[(i + 1) % n]) <= eps) {
+        hull.erase(hull.begin() + static_cast<std::ptrdiff_t>(i));
+        removed = true;
+      }
+    }
+  }
+  return hull;
+}
+
+double polygon_area(const std::vector<Eigen::Vector2d>& p) {
+  double twice = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) twice += cross2(Eigen::Vector2d::Zero(), p[i], p[(i + 1) % p.size()]);
+  return 0.5 * std::abs(twice);
+}
+
+std::vector<Vec3> corner_points(const std::vector<std::pair<Vec3, Vec3>>& blades) {
+  std::vector<Vec3> points;
+  points.reserve(2 * blades.size());
+  for (const auto& [base, tip] : blades) {
+    points.push_back(base);
+    points.push_back(tip);
+  }
+  return points;
+}
+
+// The hull of the points on their plane, and its area.
+struct Hull {
+  Plane plane;
+  std::vector<Eigen::Vector2d> corners;
+  double area = 0, diameter = 0, off_plane = 0;  // off_plane: largest distance of a point to the plane
+};
+
+Hull hull_of(const std::vector<Vec3>& points) {
+  Hull h;
+  h.plane = fit_plane(points);
+  h.diameter = diameter(points);
+  std::vector<Eigen::Vector2d> flat;
+  flat.reserve(points.size());
+  for (const Vec3& p : points) {
+    const Vec3 d = p - h.plane.origin;
+    flat.emplace_back(d.dot(h.plane.u), d.dot(h.plane.v));
+    h.off_plane = std::max(h.off_plane, std::abs(d.dot(h.plane.n)));
+  }
+  h.corners = convex_hull(std::move(flat), 1e-12 * h.diameter * h.diameter);
+  h.area = h.corners.size() >= 3 ? polygon_area(h.corners) : 0.0;
+  return h;
+}
+
+}  // namespace
+
+double sweep_area(const Vec3& a0, const Vec3& b0, const Vec3& a1, const Vec3& b1) {
+  return 0.5 * ((b0 - a0).cross(b1 - a0).norm() + (b1 - a0).cross(a1 - a0).norm());
+}
+
+bool StrokeSweep::extends(const Blade& next) const {
+  if (blades_.size() < 2) return true;  // two poses always span one sweep
+  std::vector<Vec3> points = corner_points(blades_);
+  points.push_back(next.first);
+  points.push_back(next.second);
+  const Hull h = hull_of(points);
+  if (h.off_plane > def_.plane_tolerance * h.diameter) return false;
+  const Blade& last = blades_.back();
+  const double swept = swept_area_ + sweep_area(last.first, last.second, next.first, next.second);
+  return h.area <= (1 + def_.hull_excess) * swept;
+}
+
+std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
+  std::vector<CutPolygon> out;
+  const Blade next(base, tip);
+  if (!extends(next)) {
+    // The next part starts here, not at the last pose: parts never share a
+    // blade segment (see the header), at the price of the one sweep between
+    // them left uncut.
+    out = close_part();
+    blades_.clear();
+    swept_area_ = 0;
+  }
+  if (!blades_.empty()) {
+    const Blade& last = blades_.back();
+    swept_area_ += sweep_area(last.first, last.second, next.first, next.second);
+  }
+  blades_.push_back(next);
+  return out;
+}
+
+std::vector<CutPolygon> StrokeSweep::finish() {
+  std::vector<CutPolygon> out = close_part();
+  blades_.clear();
+  swept_area_ = 0;
+  return out;
+}
+
+std::vector<CutPolygon> StrokeSweep::close_part() {
+  if (blades_.size() < 2) return {};
+  const Hull h = hull_of(corner_points(blades_));
+  if (h.corners.size() < 3 || h.area <= CutPolygonDef{}.min_relative_area * h.diameter * h.diameter) return {};
+  std::vector<Vec3> corners;
+  corners.reserve(h.corners.size());
+  for (const auto& c : h.corners) corners.push_back(h.plane.origin + c.x() * h.plane.u + c.y() * h.plane.v);
+  return {CutPolygon::from_points(corners, "scalpel stroke")};
+}
+
+}  // namespace mtcut::cut

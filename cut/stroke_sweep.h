@@ -1,0 +1,67 @@
+#pragma once
+// The cut polygons of a scalpel stroke: the blade's per-frame sweeps merged
+// into one planar convex polygon for each straight part of the stroke.
+//
+// Why merge instead of cutting every frame's thin sweep. Two consecutive
+// sweeps share the blade segment of the frame between them exactly, so the
+// second cut starts on the outline the first one stopped at: every tet along
+// that segment is split partially by the first cut and again, through the
+// points the first one made, by the second. Those points lie on the second
+// polygon's plane only up to rounding, and the re-split pinches the mesh
+// along the junction (an edge with both sides of the crack on it) at some
+// resolution of the MT. One polygon per straight part has no junction: the
+// MT cut stays a sequence of independent planar cuts, which the cutter does
+// exactly, and it makes fewer tets (no re-split band every frame). The price
+// is latency: a part is cut when the blade turns or leaves the tissue, not
+// while it is still moving in a straight line.
+//
+// A part ends when the next blade pose leaves its plane (beyond
+// `plane_tolerance` of its diameter) or would make the union of its sweeps
+// non-convex (the convex hull larger than the swept area by more than
+// `hull_excess`). The next part starts at that pose, not at the last one:
+// two parts sharing a blade segment would bring the junction back, so the
+// one sweep between them is left uncut (a turning stroke may leave a thin
+// bridge there; a straight one, the usual scalpel draw, is one exact cut).
+
+#include <utility>
+#include <vector>
+
+#include "cut/cut_polygon.h"
+
+namespace mtcut::cut {
+
+struct StrokeSweepDef {
+  double plane_tolerance = 0.02;  // of the part's diameter
+  double hull_excess = 0.05;      // relative area the hull may exceed the sweeps by
+};
+
+class StrokeSweep {
+ public:
+  explicit StrokeSweep(const StrokeSweepDef& def = {}) : def_(def) {}
+
+  // The blade (base, tip) at the next pose of an engaged stroke (the first
+  // call starts the stroke). Returns the polygon of the part that ended, if
+  // this pose turned the stroke.
+  std::vector<CutPolygon> add(const Vec3& base, const Vec3& tip);
+  // The stroke ended (the blade disengaged): the polygon of the last part.
+  std::vector<CutPolygon> finish();
+  // A stroke has begun and not finished.
+  bool active() const { return !blades_.empty(); }
+
+ private:
+  using Blade = std::pair<Vec3, Vec3>;
+  // The part's polygon (the convex hull of its blades, on their plane), or
+  // nothing when it sweeps no area.
+  std::vector<CutPolygon> close_part();
+  // Would the part stay one planar convex polygon with `next` added?
+  bool extends(const Blade& next) const;
+
+  StrokeSweepDef def_;
+  std::vector<Blade> blades_;  // the poses of the current part
+  double swept_area_ = 0;      // sum of the areas its consecutive sweeps cover
+};
+
+// Area of the quad a blade sweeps between two poses (two triangles).
+double sweep_area(const Vec3& a0, const Vec3& b0, const Vec3& a1, const Vec3& b1);
+
+}  // namespace mtcut::cut

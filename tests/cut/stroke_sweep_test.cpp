@@ -1,0 +1,87 @@
+#include "cut/stroke_sweep.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace mtcut::cut {
+namespace {
+
+// Area of a planar convex polygon (fan from its first corner).
+double area(const CutPolygon& p) {
+  double a = 0;
+  const auto& c = p.corners();
+  for (std::size_t i = 1; i + 1 < c.size(); ++i) a += 0.5 * (c[i] - c[0]).cross(c[i + 1] - c[0]).norm();
+  return a;
+}
+
+TEST(StrokeSweep, StraightStrokeIsOnePolygonCoveringEverySweep) {
+  StrokeSweep stroke;
+  // A vertical blade drawn along y with rounding noise in x, as a keyframed
+  // path interpolated over 60 frames gives.
+  for (int f = 0; f <= 60; ++f) {
+    const double y = -0.06 + 0.12 * f / 60.0, noise = (f % 3 - 1) * 1e-17;
+    EXPECT_TRUE(stroke.add(Vec3(0.04 + noise, y, 0.06), Vec3(0.04, y, -0.045)).empty()) << "frame " << f;
+  }
+  EXPECT_TRUE(stroke.active());
+  const auto polygons = stroke.finish();
+  EXPECT_FALSE(stroke.active());
+  ASSERT_EQ(polygons.size(), 1u);
+  EXPECT_EQ(polygons[0].size(), 4u);
+  EXPECT_NEAR(area(polygons[0]), 0.12 * 0.105, 1e-12);
+  EXPECT_NEAR(std::abs(polygons[0].normal().x()), 1.0, 1e-12);
+  for (const Vec3& c : polygons[0].corners()) {
+    EXPECT_NEAR(c.x(), 0.04, 1e-12);
+    EXPECT_NEAR(std::abs(c.y()), 0.06, 1e-12);
+  }
+}
+
+TEST(StrokeSweep, BladeThatDoesNotMoveCutsNothing) {
+  StrokeSweep stroke;
+  for (int f = 0; f < 5; ++f) EXPECT_TRUE(stroke.add(Vec3(0, 0, 1), Vec3(0, 0, 0)).empty());
+  EXPECT_TRUE(stroke.finish().empty());
+  // A plunge (the blade moving along itself) sweeps no area either.
+  for (int f = 0; f < 5; ++f) stroke.add(Vec3(0, 0, 1 - 0.1 * f), Vec3(0, 0, -0.1 * f));
+  EXPECT_TRUE(stroke.finish().empty());
+}
+
+TEST(StrokeSweep, TurnEndsThePartAndTheNextStartsAtTheNewPose) {
+  StrokeSweep stroke;
+  // Along +y in the plane x = 0, then along +x in the plane y = 1.
+  for (int f = 0; f <= 10; ++f) EXPECT_TRUE(stroke.add(Vec3(0, 0.1 * f, 1), Vec3(0, 0.1 * f, 0)).empty());
+  const auto first = stroke.add(Vec3(0.1, 1.0, 1), Vec3(0.1, 1.0, 0));
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_NEAR(area(first[0]), 1.0, 1e-12);
+  EXPECT_NEAR(std::abs(first[0].normal().x()), 1.0, 1e-12);
+  for (int f = 2; f <= 10; ++f) EXPECT_TRUE(stroke.add(Vec3(0.1 * f, 1.0, 1), Vec3(0.1 * f, 1.0, 0)).empty());
+  const auto second = stroke.finish();
+  ASSERT_EQ(second.size(), 1u);
+  EXPECT_NEAR(area(second[0]), 0.9, 1e-12);  // from x = 0.1: the turning sweep is left uncut
+  EXPECT_NEAR(std::abs(second[0].normal().y()), 1.0, 1e-12);
+}
+
+TEST(StrokeSweep, CurvedStrokeInOnePlaneIsSplitWhereItStopsBeingConvex) {
+  StrokeSweep stroke;
+  // A short blade along a half circle in the plane z = 0: the hull of the
+  // whole arc would cut far more than the blade swept.
+  std::size_t parts = 0;
+  double cut_area = 0;
+  for (int f = 0; f <= 60; ++f) {
+    const double a = 3.14159 * f / 60;
+    const Vec3 dir(std::cos(a), std::sin(a), 0);
+    for (const auto& p : stroke.add(0.9 * dir, 1.1 * dir)) ++parts, cut_area += area(p);
+  }
+  for (const auto& p : stroke.finish()) ++parts, cut_area += area(p);
+  EXPECT_GT(parts, 1u);
+  const double swept = 0.5 * 3.14159 * (1.1 * 1.1 - 0.9 * 0.9);
+  EXPECT_LT(cut_area, 1.05 * swept);
+  EXPECT_GT(cut_area, 0.7 * swept);
+}
+
+TEST(StrokeSweep, SweepAreaOfATranslatedBlade) {
+  EXPECT_NEAR(sweep_area(Vec3(0, 0, 0), Vec3(0, 0, 2), Vec3(3, 0, 0), Vec3(3, 0, 2)), 6.0, 1e-12);
+  EXPECT_NEAR(sweep_area(Vec3(0, 0, 0), Vec3(0, 0, 2), Vec3(0, 0, 1), Vec3(0, 0, 3)), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace mtcut::cut
