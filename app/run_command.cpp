@@ -58,15 +58,15 @@ std::string default_out_dir(const std::string& scenario_path) {
 }
 
 RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
-  const fs::path dir = options.out_dir.empty() ? fs::path(default_out_dir(scenario.file)) : fs::path(options.out_dir);
-  make_out_dir(dir);
   const InterruptGuard interrupt;
-
   const auto setup_start = Clock::now();
   engine::Mt mt = build_organ_mt(scenario);
   RunRecord record;
   record.mt_stats = engine::compute_mt_stats(mt);
   record.setup_seconds = seconds_since(setup_start);
+  // Made once the inputs are known good: a bad mesh leaves no folder behind.
+  const fs::path dir = options.out_dir.empty() ? fs::path(default_out_dir(scenario.file)) : fs::path(options.out_dir);
+  make_out_dir(dir);
 
   sim::World world(std::move(mt), scenario.world);
   const int frames = options.frames_override > 0 ? options.frames_override : scenario.frames;
