@@ -122,7 +122,8 @@ void print_run_paragraph(std::ostream& out, const nlohmann::ordered_json& s) {
   if (s.contains("outputs")) {
     const auto& o = s["outputs"];
     p << " Outputs in " << o["dir"].get<std::string>() << ": metrics.csv, summary.json";
-    if (o["snapshots"].get<int>() > 0) p << ", " << o["snapshots"].get<int>() << " snapshots (" << o["pvd"].get<std::string>() << ")";
+    if (o["snapshots"].get<int>() > 0)
+      p << ", " << o["snapshots"].get<int>() << " snapshots (" << o["pvd"].get<std::string>() << ")";
     p << ", " << o["surface"].get<std::string>();
     if (o.contains("trace")) p << "; scalpel trace " << o["trace"].get<std::string>();
     p << ".";

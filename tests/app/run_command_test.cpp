@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "tests/app/run_fixture.h"
@@ -12,7 +12,6 @@
 
 namespace mtcut::test {
 namespace {
-namespace fs = std::filesystem;
 
 class RunCommand : public RunFixture {
  protected:
@@ -27,8 +26,8 @@ class RunCommand : public RunFixture {
 
 TEST_F(RunCommand, DefaultScenarioRunsValidAndWritesItsSummary) {
   const std::string summary = path("summary.json");
-  const CommandResult r = run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) +
-                                    " --frames 30 --json --out " + quoted(path("out")) + " --summary " + quoted(summary));
+  const CommandResult r = run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 30" +
+                                    " --json --out " + quoted(path("out")) + " --summary " + quoted(summary));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto out = nlohmann::json::parse(r.out);
   EXPECT_TRUE(out["valid"].get<bool>());
@@ -39,8 +38,8 @@ TEST_F(RunCommand, DefaultScenarioRunsValidAndWritesItsSummary) {
 }
 
 TEST_F(RunCommand, SameScenarioTwiceGivesTheSameStateHash) {
-  const std::string args =
-      "run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 40 --json --out " + quoted(path("out"));
+  const std::string args = "run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 40 --json" +
+                           " --out " + quoted(path("out"));
   const CommandResult a = run_mtcut(args), b = run_mtcut(args);
   ASSERT_EQ(a.exit_code, 0) << a.err;
   ASSERT_EQ(b.exit_code, 0) << b.err;

@@ -26,8 +26,8 @@ class RunRecord : public RunFixture {
 
 TEST_F(RunRecord, ReplayingTheRecordedTraceGivesTheSameStateHash) {
   const std::string scenario = source_path("config/scenarios/default.toml");
-  const auto original =
-      run_json("run " + quoted(scenario) + " --frames 40 --out " + quoted(path("a")) + " --record " + quoted(path("trace.csv")));
+  const auto original = run_json("run " + quoted(scenario) + " --frames 40 --out " + quoted(path("a")) + " --record " +
+                                 quoted(path("trace.csv")));
   const std::string trace = read_text(path("trace.csv"));
   EXPECT_EQ(std::count(trace.begin(), trace.end(), '\n'), 41);  // the header and one sample per frame
 
@@ -39,7 +39,8 @@ TEST_F(RunRecord, ReplayingTheRecordedTraceGivesTheSameStateHash) {
   EXPECT_EQ(replayed["scalpel_trace"], path("trace.csv"));
 
   // Recording the replay gives the same trace again, byte for byte.
-  run_json("run " + quoted(replay) + " --frames 40 --out " + quoted(path("c")) + " --record " + quoted(path("again.csv")));
+  run_json("run " + quoted(replay) + " --frames 40 --out " + quoted(path("c")) + " --record " +
+           quoted(path("again.csv")));
   EXPECT_EQ(read_text(path("again.csv")), trace);
 }
 
@@ -56,14 +57,13 @@ TEST_F(RunRecord, AMalformedTraceRowFailsWithFileLineAndExit1) {
 
 TEST_F(RunRecord, TraceKeyFaultsAreOneLineAndExit1) {
   const std::string run = " --frames 2 --out " + quoted(path("out"));
-  expect_one_line_error(run_mtcut("run " + quoted(write("a.toml", replay_of("missing.csv"))) + run),
-                        "a.toml:" );
+  expect_one_line_error(run_mtcut("run " + quoted(write("a.toml", replay_of("missing.csv"))) + run), "a.toml:");
   expect_one_line_error(run_mtcut("run " + quoted(write("a.toml", replay_of("missing.csv"))) + run),
                         "trace file '" + path("missing.csv") + "' does not exist");
   write("t.csv", "time,base_x,base_y,base_z,tip_x,tip_y,tip_z,engaged\n0,0,0,1,0,0,0,1\n");
-  expect_one_line_error(
-      run_mtcut("run " + quoted(write("b.toml", variant("[[scalpel.keyframes]]", "[scalpel]\ntrace = \"t.csv\"\n\n[[scalpel.keyframes]]"))) + run),
-      "give keyframes or a trace, not both");
+  const std::string both =
+      variant("[[scalpel.keyframes]]", "[scalpel]\ntrace = \"t.csv\"\n\n[[scalpel.keyframes]]");
+  expect_one_line_error(run_mtcut("run " + quoted(write("b.toml", both)) + run), "give keyframes or a trace, not both");
   expect_one_line_error(run_mtcut("run " + quoted(write("c.toml", with_snapshots(-1))) + run),
                         "'output.snapshot_every' must be >= 0");
 }

@@ -79,7 +79,8 @@ TEST_F(ScalpelTrace, WritesTheDocumentedFormat) {
 }
 
 TEST_F(ScalpelTrace, ReadsCrLfAndAFinalLineWithoutEnd) {
-  const ScalpelPath p = read_scalpel_trace(write(std::string(kScalpelTraceHeader) + "\r\n0,1,2,3,4,5,6,1\r\n1,1,2,3,4,5,7,0"));
+  const ScalpelPath p =
+      read_scalpel_trace(write(std::string(kScalpelTraceHeader) + "\r\n0,1,2,3,4,5,6,1\r\n1,1,2,3,4,5,7,0"));
   ASSERT_EQ(p.keyframes().size(), 2u);
   EXPECT_EQ(p.keyframes()[1].pose.tip.z(), 7.0);
   EXPECT_TRUE(p.keyframes()[0].pose.engaged);
