@@ -58,6 +58,14 @@ std::string default_out_dir(const std::string& scenario_path) {
 }
 
 RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
+  // Checked before the run, so a typo does not cost the run's trace at its end.
+  if (!options.record_path.empty()) {
+    const fs::path folder = fs::absolute(options.record_path).parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec))
+      throw engine::InputError(options.record_path + ": cannot record the trace there (no folder " + folder.string() +
+                               ")");
+  }
   const InterruptGuard interrupt;
   const auto setup_start = Clock::now();
   engine::Mt mt = build_organ_mt(scenario);

@@ -220,6 +220,12 @@ TEST_F(RunOutputs, AnOutputFolderThatCannotBeMadeIsOneLineAndExit1) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("cannot create the output folder"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+
+  const CommandResult trace = run_mtcut("run --frames 2 --out " + quoted(path("out")) + " --record " +
+                                        quoted(path("no_folder/trace.csv")));
+  EXPECT_EQ(trace.exit_code, 1);
+  EXPECT_NE(trace.err.find("no_folder/trace.csv: cannot record the trace there"), std::string::npos) << trace.err;
+  EXPECT_FALSE(fs::exists(path("out")));
 }
 
 }  // namespace
