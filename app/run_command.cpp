@@ -1,117 +1,129 @@
 #include "app/run_command.h"
 
-#include <algorithm>
 #include <chrono>
-#include <iomanip>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
-#include <numeric>
-#include <sstream>
+#include <set>
 
-#include "app/json_report.h"
+#include "app/material_file.h"
+#include "app/run_interrupt.h"
+#include "app/run_metrics.h"
+#include "app/run_progress.h"
+#include "app/run_snapshots.h"
+#include "app/run_summary.h"
 #include "engine/atomic_file.h"
 #include "engine/input_error.h"
 #include "engine/mt/mt_builder.h"
 #include "engine/mt/mt_stats.h"
+#include "sim/scalpel_trace.h"
 #include "sim/world.h"
 
 namespace mtcut::app {
 namespace {
+namespace fs = std::filesystem;
 
 using Clock = std::chrono::steady_clock;
 
-// mean, median, 95th percentile and max of a series, in its unit.
-nlohmann::ordered_json distribution(std::vector<double> values) {
-  if (values.empty()) return nullptr;
-  std::sort(values.begin(), values.end());
-  const double mean = std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
-  return {{"mean", mean},
-          {"p50", values[values.size() / 2]},
-          {"p95", values[std::min(values.size() - 1, values.size() * 95 / 100)]},
-          {"max", values.back()}};
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// The organ's MT, built from the scenario's mesh.
+engine::Mt build_organ_mt(const ScenarioDef& scenario) {
+  const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
+  if (const auto report = loaded.mesh.validate(); !report.ok())
+    throw engine::InputError(scenario.mesh + ": invalid tet mesh: " + report.problems.front());
+  return engine::build_mt(loaded.mesh, scenario.world.mt);
 }
 
-std::string hex(std::uint64_t v) {
-  std::ostringstream s;
-  s << std::hex << std::setw(16) << std::setfill('0') << v;
-  return s.str();
+void make_out_dir(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) throw engine::InputError(dir.string() + ": cannot create the output folder");
+}
+
+// Every place the summary goes: DIR/summary.json, the scenario's [output]
+// summary (relative to DIR) and --summary (relative to the working folder).
+std::set<fs::path> summary_paths(const fs::path& dir, const std::string& scenario_summary) {
+  std::set<fs::path> paths{(dir / "summary.json").lexically_normal()};
+  if (!scenario_summary.empty()) paths.insert((dir / scenario_summary).lexically_normal());
+  return paths;
 }
 
 }  // namespace
 
-nlohmann::ordered_json run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
-  const auto start = Clock::now();
-  const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
-  if (const auto report = loaded.mesh.validate(); !report.ok())
-    throw engine::InputError(scenario.mesh + ": invalid tet mesh: " + report.problems.front());
-  engine::MtBuildReport build;
-  engine::Mt mt = engine::build_mt(loaded.mesh, scenario.world.mt, &build);
-  const engine::MtStats mt_stats = engine::compute_mt_stats(mt);
-  const double setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+std::string default_scenario_path() { return config_dir() + "/scenarios/default.toml"; }
+
+std::string default_out_dir(const std::string& scenario_path) {
+  return (fs::path("out") / fs::path(scenario_path).stem()).string();
+}
+
+RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
+  // Checked before the run, so a typo does not cost the run's trace at its end.
+  if (!options.record_path.empty()) {
+    const fs::path folder = fs::absolute(options.record_path).parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec))
+      throw engine::InputError(options.record_path + ": cannot record the trace there (no folder " + folder.string() +
+                               ")");
+  }
+  const InterruptGuard interrupt;
+  const auto setup_start = Clock::now();
+  engine::Mt mt = build_organ_mt(scenario);
+  RunRecord record;
+  record.mt_stats = engine::compute_mt_stats(mt);
+  record.setup_seconds = seconds_since(setup_start);
+  // Made once the inputs are known good: a bad mesh leaves no folder behind.
+  const fs::path dir = options.out_dir.empty() ? fs::path(default_out_dir(scenario.file)) : fs::path(options.out_dir);
+  make_out_dir(dir);
 
   sim::World world(std::move(mt), scenario.world);
   const int frames = options.frames_override > 0 ? options.frames_override : scenario.frames;
-  std::vector<double> total_ms, cut_ms, lod_ms, physics_ms;
-  std::vector<std::string> csv_rows;
-  std::size_t min_tets = SIZE_MAX, max_tets = 0;
-  int cg_iterations = 0;
-  auto last_report = Clock::now();
+  record.frames_requested = frames;
+  const int every = scenario.snapshot_every;
+  SnapshotSeries snapshots(dir.string(), world.mt().num_vertices());
+  std::vector<MetricsRow> rows;
+  std::vector<sim::ScalpelSample> samples;
+  PieceCounter pieces;
+  rows.reserve(static_cast<std::size_t>(frames));
+
   const auto run_start = Clock::now();
-  for (int f = 0; f < frames; ++f) {
-    const sim::FrameMetrics& m = world.step(scenario.scalpel.pose_at(world.time()));
-    total_ms.push_back(m.total_ms);
-    cut_ms.push_back(m.cut_ms);
-    lod_ms.push_back(m.lod_ms);
-    physics_ms.push_back(m.physics_ms);
-    min_tets = std::min(min_tets, m.frontier_tets);
-    max_tets = std::max(max_tets, m.frontier_tets);
-    cg_iterations += m.cg_iterations;
-    if (!scenario.frames_path.empty()) {
-      std::ostringstream row;
-      row << m.frame << "," << m.time << "," << m.cut_ms << "," << m.lod_ms << "," << m.physics_ms << ","
-          << m.total_ms << "," << m.frontier_tets << "," << m.frontier_vertices << "," << m.springs << ","
-          << m.lod_changes << "," << m.cg_iterations << "," << (m.step_refused ? 1 : 0);
-      csv_rows.push_back(row.str());
+  {
+    ProgressBar progress(frames, options.progress);
+    if (every > 0 && !interrupt.requested()) snapshots.write(world);
+    for (int f = 0; f < frames && !interrupt.requested(); ++f) {
+      const sim::ScalpelPose pose = scenario.scalpel.pose_at(world.time());
+      if (!options.record_path.empty()) samples.push_back({world.time(), pose});
+      world.step(pose);
+      rows.push_back(record_frame(world, pieces));
+      if (every > 0 && world.frame() % static_cast<std::uint64_t>(every) == 0) snapshots.write(world);
+      progress.update(f + 1, rows.back().frame.total_ms);
     }
-    if (options.progress && Clock::now() - last_report > std::chrono::seconds(1)) {
-      std::cerr << "\rmtcut run: frame " << f + 1 << "/" << frames << std::flush;
-      last_report = Clock::now();
-    }
+    // The series ends with the last state, also when the run stopped early.
+    if (every > 0 && snapshots.last_frame() != static_cast<std::int64_t>(world.frame())) snapshots.write(world);
   }
-  if (options.progress && std::chrono::duration<double>(Clock::now() - run_start).count() > 1) std::cerr << "\n";
-  const double run_seconds = std::chrono::duration<double>(Clock::now() - run_start).count();
+  record.run_seconds = seconds_since(run_start);
+  record.interrupted = interrupt.requested();
+  record.rows = rows;
 
-  const engine::ValidationReport valid = world.validate();
-  nlohmann::ordered_json out;
-  out["scenario"] = scenario.file;
-  out["mesh"] = scenario.mesh;
-  out["mt"] = {{"vertices", mt_stats.vertices},       {"tets_total", mt_stats.tets_total},
-               {"fragments", mt_stats.fragments},     {"dag_depth", mt_stats.dag_depth},
-               {"finest_tets", mt_stats.finest_tets}, {"coarsest_tets", mt_stats.coarsest_tets}};
-  out["frames"] = frames;
-  out["simulated_seconds"] = world.time();
-  out["setup_seconds"] = setup_seconds;
-  out["run_seconds"] = run_seconds;
-  out["frame_ms"] = distribution(total_ms);
-  out["cut_ms"] = distribution(cut_ms);
-  out["lod_ms"] = distribution(lod_ms);
-  out["physics_ms"] = distribution(physics_ms);
-  out["frontier_tets"] = {{"min", min_tets}, {"max", max_tets}, {"final", world.frontier().tets().size()}};
-  out["mean_cg_iterations"] = frames > 0 ? static_cast<double>(cg_iterations) / frames : 0.0;
-  out["pieces"] = 1;
-  out["nan_events"] = world.nan_events();
-  out["valid"] = valid.ok();
-  if (!valid.ok()) out["problems"] = valid.problems;
-  out["state_hash"] = hex(world.state_hash());
+  write_metrics_csv((dir / "metrics.csv").string(), rows);
+  if (!scenario.frames_path.empty()) write_stage_csv((dir / scenario.frames_path).string(), rows);
+  write_deformed_surface(world, (dir / "surface.obj").string());
+  if (!options.record_path.empty()) sim::write_scalpel_trace(options.record_path, samples);
 
-  if (!scenario.summary_path.empty())
-    engine::write_stream_atomically(scenario.summary_path, [&](std::ostream& s) { s << out.dump(2) << "\n"; });
-  if (!scenario.frames_path.empty())
-    engine::write_stream_atomically(scenario.frames_path, [&](std::ostream& s) {
-      s << "frame,time,cut_ms,lod_ms,physics_ms,total_ms,frontier_tets,frontier_vertices,springs,lod_changes,"
-           "cg_iterations,refused\n";
-      for (const auto& row : csv_rows) s << row << "\n";
-    });
-  return out;
+  RunResult result;
+  result.interrupted = record.interrupted;
+  result.summary = summarize_run(scenario, record, world);
+  nlohmann::ordered_json outputs = {{"dir", dir.string()},
+                                    {"metrics", "metrics.csv"},
+                                    {"summary", "summary.json"},
+                                    {"snapshots", snapshots.count()},
+                                    {"pvd", every > 0 ? SnapshotSeries::kCollection : ""},
+                                    {"surface", "surface.obj"}};
+  if (!options.record_path.empty()) outputs["trace"] = options.record_path;
+  result.summary["outputs"] = outputs;
+  for (const fs::path& path : summary_paths(dir, scenario.summary_path))
+    engine::write_stream_atomically(path.string(), [&](std::ostream& s) { s << result.summary.dump(2) << "\n"; });
+  return result;
 }
 
 void register_run_command(CLI::App& app) {
@@ -124,22 +136,35 @@ void register_run_command(CLI::App& app) {
   auto options = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
       "run",
-      "Play a scenario headless (TOML: organ, MT, material, LOD, cutter, integrator, scalpel keyframes) and report "
-      "frame times, element counts, pieces and the state hash.\n"
-      "  mtcut run config/scenarios/default.toml --json");
-  cmd->add_option("scenario", options->scenario, "the scenario file (config/scenarios/*.toml)")->required();
+      "Play a scenario headless (TOML: organ, MT, material, LOD, cutter, integrator, scalpel keyframes or trace) and "
+      "write into the output folder: metrics.csv (one row per frame), summary.json, .vtu snapshots with a .pvd "
+      "collection ([output] snapshot_every), surface.obj (the final deformed surface). Ctrl-C stops after the "
+      "current frame, writes the outputs of the frames done and exits with 130.\n"
+      "  mtcut run config/scenarios/liver.toml --frames 60 --out out/liver --record liver_trace.csv");
+  cmd->add_option("scenario", options->scenario,
+                  "the scenario file (config/scenarios/*.toml); default: the built-in default scenario, " +
+                      default_scenario_path());
   cmd->add_option("--frames", options->run.frames_override, "run this many frames instead of the scenario's")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--summary", options->summary, "write the summary JSON to this file (overrides [output] summary)");
-  cmd->add_flag("--json", options->json, "print the summary as JSON");
+  cmd->add_option("--out", options->run.out_dir,
+                  "the output folder (made if missing); default: out/<scenario file name without .toml>");
+  cmd->add_option("--record", options->run.record_path,
+                  "write the scalpel samples of the run to this trace file (CSV, see README)");
+  cmd->add_option("--summary", options->summary, "also write the summary JSON to this file");
+  cmd->add_flag("--json", options->json, "print the summary as JSON instead of a paragraph");
   cmd->callback([options] {
-    ScenarioDef scenario = load_scenario(options->scenario);
-    if (!options->summary.empty()) scenario.summary_path = options->summary;
-    const auto summary = run_scenario(scenario, options->run);
+    const ScenarioDef scenario = load_scenario(options->scenario.empty() ? default_scenario_path() : options->scenario);
+    const RunResult result = run_scenario(scenario, options->run);
+    if (!options->summary.empty())
+      engine::write_stream_atomically(options->summary, [&](std::ostream& s) { s << result.summary.dump(2) << "\n"; });
     if (options->json) {
-      std::cout << summary.dump(2) << "\n";
+      std::cout << result.summary.dump(2) << "\n";
     } else {
-      print_human(std::cout, summary);
+      print_run_paragraph(std::cout, result.summary);
+    }
+    if (result.interrupted) {
+      std::cout.flush();
+      std::exit(kInterruptedExitCode);
     }
   });
 }

@@ -1,9 +1,12 @@
 #pragma once
-// `mtcut run SCENARIO [--frames N] [--summary FILE] [--json]`: plays a
-// scenario headless and reports its figures (the project's main job).
+// `mtcut run [SCENARIO] [--frames N] [--out DIR] [--json] [--record TRACE]`:
+// plays a scenario headless (the project's main job) and writes its outputs
+// into DIR: metrics.csv, summary.json, .vtu snapshots with a .pvd
+// collection, and the final deformed surface (surface.obj).
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "app/scenario.h"
 
@@ -13,10 +16,23 @@ void register_run_command(CLI::App& app);
 
 struct RunOptions {
   int frames_override = 0;  // 0: the scenario's
-  bool progress = true;     // a progress line on stderr about once a second
+  bool progress = true;     // a progress bar on stderr when it is a terminal
+  std::string out_dir;      // "" : out/<scenario file name without extension>
+  std::string record_path;  // write the scalpel samples here ("" = no)
 };
 
-// Plays the scenario; returns the summary (also what summary.json holds).
-nlohmann::ordered_json run_scenario(const ScenarioDef& scenario, const RunOptions& options);
+struct RunResult {
+  nlohmann::ordered_json summary;  // what summary.json holds
+  bool interrupted = false;        // SIGINT stopped the run early
+};
+
+// Plays the scenario and writes its outputs. Throws InputError.
+RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options);
+
+// The scenario `mtcut run` plays without one: <config dir>/scenarios/default.toml.
+std::string default_scenario_path();
+
+// The output folder by default: out/<scenario file name without extension>.
+std::string default_out_dir(const std::string& scenario_path);
 
 }  // namespace mtcut::app

@@ -6,6 +6,7 @@
 #include "app/toml_table.h"
 #include "engine/builtin_shapes.h"
 #include "engine/input_error.h"
+#include "sim/scalpel_trace.h"
 
 namespace mtcut::app {
 namespace {
@@ -127,7 +128,21 @@ void read_integrator(TomlTable& t, sim::IntegratorDef& integrator) {
   t.finish();
 }
 
-sim::ScalpelPath read_scalpel(TomlTable& t) {
+// A recorded trace (sim/scalpel_trace.h), relative to the scenario's folder.
+sim::ScalpelPath read_scalpel_trace_key(TomlTable& t, const std::string& scenario_dir, ScenarioDef& s) {
+  const toml::node* trace = t.node("trace");
+  if (!trace->is_string()) t.fail(trace, "'scalpel.trace' must name a trace file (.csv)");
+  s.scalpel_trace = trace->value<std::string>().value();
+  if (fs::path(s.scalpel_trace).is_relative()) s.scalpel_trace = (fs::path(scenario_dir) / s.scalpel_trace).string();
+  std::error_code ec;
+  if (!fs::is_regular_file(s.scalpel_trace, ec)) t.fail(trace, "trace file '" + s.scalpel_trace + "' does not exist");
+  if (!t.tables("keyframes").empty()) t.fail(trace, "[scalpel]: give keyframes or a trace, not both");
+  t.finish();
+  return sim::read_scalpel_trace(s.scalpel_trace);
+}
+
+sim::ScalpelPath read_scalpel(TomlTable& t, const std::string& scenario_dir, ScenarioDef& s) {
+  if (t.node("trace")) return read_scalpel_trace_key(t, scenario_dir, s);
   std::vector<sim::ScalpelKeyframe> keys;
   for (TomlTable& k : t.tables("keyframes")) {
     sim::ScalpelKeyframe key;
@@ -144,7 +159,7 @@ sim::ScalpelPath read_scalpel(TomlTable& t) {
     k.finish();
     keys.push_back(key);
   }
-  if (keys.empty()) t.fail(nullptr, "[scalpel] needs at least one [[scalpel.keyframes]]");
+  if (keys.empty()) t.fail(nullptr, "[scalpel] needs at least one [[scalpel.keyframes]] or a trace");
   t.finish();
   return sim::ScalpelPath(std::move(keys));
 }
@@ -169,8 +184,8 @@ ScenarioDef load_scenario(const std::string& path) {
   if (auto t = top.table("cutter")) read_cutter(*t, s.world.cut_budget);
   if (auto t = top.table("integrator")) read_integrator(*t, s.world.integrator);
   auto scalpel = top.table("scalpel");
-  if (!scalpel) top.fail(nullptr, "the scenario needs a [scalpel] section with keyframes");
-  s.scalpel = read_scalpel(*scalpel);
+  if (!scalpel) top.fail(nullptr, "the scenario needs a [scalpel] section with keyframes or a trace");
+  s.scalpel = read_scalpel(*scalpel, dir, s);
   if (auto run = top.table("run")) {
     run->read("frames", s.frames);
     run->read("dt", s.world.dt);
@@ -183,6 +198,8 @@ ScenarioDef load_scenario(const std::string& path) {
   if (auto out = top.table("output")) {
     out->read("summary", s.summary_path);
     out->read("frames", s.frames_path);
+    out->read("snapshot_every", s.snapshot_every);
+    if (s.snapshot_every < 0) out->fail(out->node("snapshot_every"), "'output.snapshot_every' must be >= 0");
     out->finish();
   }
   top.finish();

@@ -18,10 +18,12 @@ struct ScenarioDef {
   std::string mesh;             // builtin:NAME or a path (resolved against the scenario's folder)
   engine::MeshLoadDef mesh_load;
   sim::WorldDef world;
-  sim::ScalpelPath scalpel;
+  sim::ScalpelPath scalpel;     // keyframes, or the samples of the trace
+  std::string scalpel_trace;    // the replayed trace file ("" = keyframes), resolved against the scenario's folder
   int frames = 120;
-  std::string summary_path;     // summary.json ("" = none), relative to the working directory
-  std::string frames_path;      // per-frame CSV ("" = none)
+  std::string summary_path;     // an extra copy of summary.json ("" = none), relative to the output folder
+  std::string frames_path;      // per-frame CSV of every stage's figures ("" = none), relative to the output folder
+  int snapshot_every = 0;       // a .vtu snapshot every this many frames (0 = none)
 };
 
 // Reads and checks a scenario. Throws InputError "file:line: what".

@@ -2,69 +2,44 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
+#include "tests/app/run_fixture.h"
 #include "tests/app/run_mtcut.h"
 #include "tests/test_paths.h"
 
 namespace mtcut::test {
 namespace {
-namespace fs = std::filesystem;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-class RunCommand : public ::testing::Test {
+class RunCommand : public RunFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mtcut-run-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-    base_ = read_text(source_path("config/scenarios/default.toml"));
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name)) << text;
-    return path(name);
-  }
-  // The default scenario with `from` replaced by `to` (which must occur).
-  std::string variant(const std::string& from, const std::string& to) const {
-    const auto at = base_.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    std::string text = base_;
-    text.replace(at, from.size(), to);
-    return text;
-  }
   void expect_rejected(const std::string& scenario_text, const std::string& what) {
     const std::string file = write("bad.toml", scenario_text);
-    const CommandResult r = run_mtcut("run " + quoted(file) + " --frames 2");
+    const CommandResult r = run_mtcut("run " + quoted(file) + " --frames 2 --out " + quoted(path("out")));
     EXPECT_EQ(r.exit_code, 1) << what << "\n" << r.err;
     EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
-  fs::path dir_;
-  std::string base_;
 };
 
 TEST_F(RunCommand, DefaultScenarioRunsValidAndWritesItsSummary) {
   const std::string summary = path("summary.json");
-  const CommandResult r =
-      run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 30 --json --summary " +
-                quoted(summary));
+  const CommandResult r = run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 30" +
+                                    " --json --out " + quoted(path("out")) + " --summary " + quoted(summary));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto out = nlohmann::json::parse(r.out);
   EXPECT_TRUE(out["valid"].get<bool>());
   EXPECT_EQ(out["nan_events"].get<int>(), 0);
   EXPECT_EQ(out["frames"].get<int>(), 30);
   EXPECT_EQ(nlohmann::json::parse(read_text(summary)), out);
+  EXPECT_EQ(nlohmann::json::parse(read_text(path("out/summary.json"))), out);
 }
 
 TEST_F(RunCommand, SameScenarioTwiceGivesTheSameStateHash) {
-  const std::string args = "run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 40 --json";
+  const std::string args = "run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 40 --json" +
+                           " --out " + quoted(path("out"));
   const CommandResult a = run_mtcut(args), b = run_mtcut(args);
   ASSERT_EQ(a.exit_code, 0) << a.err;
   ASSERT_EQ(b.exit_code, 0) << b.err;

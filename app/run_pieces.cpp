@@ -1,0 +1,51 @@
+#include "app/run_pieces.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "engine/tet_adjacency.h"
+
+namespace mtcut::app {
+
+PieceLabels label_pieces(const engine::TetMesh& mesh) {
+  const engine::TetAdjacency adjacency = engine::build_adjacency(mesh);
+  const std::size_t n = mesh.num_tets();
+  std::vector<std::int32_t> component(n, -1);  // (n_tets) in order of discovery
+  std::vector<std::size_t> sizes;              // (n_components)
+  std::vector<std::size_t> stack;
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    if (component[seed] >= 0) continue;
+    const auto id = static_cast<std::int32_t>(sizes.size());
+    sizes.push_back(0);
+    component[seed] = id;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const std::size_t t = stack.back();
+      stack.pop_back();
+      ++sizes.back();
+      for (const engine::TetId next : adjacency.neighbors[t]) {
+        if (!next.valid() || component[next.index()] >= 0) continue;
+        component[next.index()] = id;
+        stack.push_back(next.index());
+      }
+    }
+  }
+  // Components are discovered in order of their smallest tet, so a stable
+  // sort by size keeps that order among equal sizes.
+  std::vector<std::int32_t> order(sizes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
+    return sizes[static_cast<std::size_t>(a)] > sizes[static_cast<std::size_t>(b)];
+  });
+  std::vector<std::int32_t> rank(sizes.size());
+  PieceLabels labels;
+  for (std::size_t r = 0; r < order.size(); ++r) {
+    rank[static_cast<std::size_t>(order[r])] = static_cast<std::int32_t>(r);
+    labels.piece_tets.push_back(sizes[static_cast<std::size_t>(order[r])]);
+  }
+  labels.tet_piece.resize(n);
+  for (std::size_t t = 0; t < n; ++t) labels.tet_piece[t] = rank[static_cast<std::size_t>(component[t])];
+  return labels;
+}
+
+}  // namespace mtcut::app

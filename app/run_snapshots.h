@@ -1,0 +1,61 @@
+#pragma once
+// The geometric outputs of `mtcut run`: .vtu snapshots of the frontier at
+// its deformed positions with per-tet data, the .pvd collection that lists
+// them with their times (ParaView plays it as a time series), and the final
+// boundary surface. Every file is written atomically, and the collection is
+// rewritten after each snapshot, so an interrupted run leaves a valid series.
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engine/tet_mesh.h"
+#include "sim/world.h"
+
+namespace mtcut::app {
+
+// A World's frontier as a compact tet mesh at the deformed positions.
+struct DeformedFrontier {
+  engine::TetMesh mesh;                    // deformed positions, tets in ascending MT tet id
+  std::vector<engine::VertId> vertex_ids;  // (n_vertices) the MT vertex of each
+  std::vector<engine::TetId> tet_ids;      // (n_tets) the MT tet of each
+};
+
+DeformedFrontier deform_frontier(const sim::World& world);
+
+// (n_fragments) level of each fragment: the root (the finest mesh) is 0, a
+// fragment is one above the highest of its parents; -1 off the DAG.
+std::vector<std::int32_t> fragment_levels(const engine::Mt& mt);
+
+class SnapshotSeries {
+ public:
+  // Files go into dir (which exists). MT vertices with ids >= first_cut_vertex
+  // (the MT's vertex count when the run started) were made by cuts.
+  SnapshotSeries(std::string dir, std::size_t first_cut_vertex);
+
+  // Writes snapshot_<frames done, 6 digits>.vtu with cell data piece,
+  // fragment_level and made_by_cut, then rewrites snapshots.pvd.
+  void write(const sim::World& world);
+
+  std::size_t count() const { return entries_.size(); }
+  // The frame count of the last snapshot written (none: -1).
+  std::int64_t last_frame() const { return last_frame_; }
+  static constexpr const char* kCollection = "snapshots.pvd";
+
+ private:
+  void write_collection() const;
+
+  std::string dir_;
+  std::size_t first_cut_vertex_;
+  std::vector<std::pair<double, std::string>> entries_;  // (simulated time, file name) per snapshot
+  std::vector<std::int32_t> levels_;                     // fragment_levels at levels_revision_
+  std::uint64_t levels_revision_ = 0;
+  std::int64_t last_frame_ = -1;
+};
+
+// The boundary surface of the deformed frontier (all pieces) as a surface
+// file (.obj), atomically.
+void write_deformed_surface(const sim::World& world, const std::string& path);
+
+}  // namespace mtcut::app

@@ -1,0 +1,134 @@
+#include "app/run_summary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <numeric>
+#include <sstream>
+
+namespace mtcut::app {
+namespace {
+
+// The value of rank ceil(q n) in the sorted values (nearest-rank percentile).
+double percentile(const std::vector<double>& sorted, double q) {
+  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(sorted.size())));
+  return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
+}
+
+// mean, median, 95th and 99th percentiles and max of a series (null when empty).
+nlohmann::ordered_json distribution(std::vector<double> values) {
+  if (values.empty()) return nullptr;
+  std::sort(values.begin(), values.end());
+  const double mean = std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+  return {{"mean", mean},
+          {"p50", percentile(values, 0.50)},
+          {"p95", percentile(values, 0.95)},
+          {"p99", percentile(values, 0.99)},
+          {"max", values.back()}};
+}
+
+std::string hex(std::uint64_t v) {
+  std::ostringstream s;
+  s << std::hex << std::setw(16) << std::setfill('0') << v;
+  return s.str();
+}
+
+// A figure of a distribution, or null.
+nlohmann::ordered_json figure(const nlohmann::ordered_json& dist, const char* key) {
+  return dist.is_null() ? nlohmann::ordered_json(nullptr) : dist[key];
+}
+
+// A number with `digits` decimals, or "n/a" for null.
+std::string fixed(const nlohmann::ordered_json& value, int digits) {
+  if (!value.is_number()) return "n/a";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << value.get<double>();
+  return s.str();
+}
+
+}  // namespace
+
+nlohmann::ordered_json summarize_run(const ScenarioDef& scenario, const RunRecord& record, const sim::World& world) {
+  std::vector<double> frame_ms, cut_ms, lod_ms, physics_ms;
+  std::size_t min_tets = world.frontier().tets().size(), max_tets = min_tets;
+  long cg_iterations = 0;
+  for (const MetricsRow& row : record.rows) {
+    const sim::FrameMetrics& m = row.frame;
+    frame_ms.push_back(m.total_ms);
+    cut_ms.push_back(m.cut_ms);
+    lod_ms.push_back(m.lod_ms);
+    physics_ms.push_back(m.physics_ms);
+    min_tets = std::min(min_tets, m.frontier_tets);
+    max_tets = std::max(max_tets, m.frontier_tets);
+    cg_iterations += m.cg_iterations;
+  }
+  const auto frames = static_cast<int>(record.rows.size());
+  const nlohmann::ordered_json frame_dist = distribution(frame_ms), cut_dist = distribution(cut_ms);
+  const engine::ValidationReport valid = world.validate();
+  const engine::MtStats& mt = record.mt_stats;
+
+  nlohmann::ordered_json out;
+  out["scenario"] = scenario.file;
+  out["mesh"] = scenario.mesh;
+  if (!scenario.scalpel_trace.empty()) out["scalpel_trace"] = scenario.scalpel_trace;
+  out["frames"] = frames;
+  out["pieces"] = record.rows.empty() ? 1 : record.rows.back().pieces;
+  out["tets_total"] = world.mt().num_live_tets();
+  out["frontier_tets_final"] = world.frontier().tets().size();
+  out["cut_ms_mean"] = figure(cut_dist, "mean");
+  out["cut_ms_max"] = figure(cut_dist, "max");
+  out["frame_ms_mean"] = figure(frame_dist, "mean");
+  out["frame_ms_p99"] = figure(frame_dist, "p99");
+  out["nan_events"] = world.nan_events();
+  out["state_hash"] = hex(world.state_hash());
+  out["frames_requested"] = record.frames_requested;
+  out["interrupted"] = record.interrupted;
+  out["simulated_seconds"] = world.time();
+  out["setup_seconds"] = record.setup_seconds;
+  out["run_seconds"] = record.run_seconds;
+  out["mt"] = {{"vertices", mt.vertices},       {"tets_total", mt.tets_total},
+               {"fragments", mt.fragments},     {"dag_depth", mt.dag_depth},
+               {"finest_tets", mt.finest_tets}, {"coarsest_tets", mt.coarsest_tets}};
+  out["frame_ms"] = frame_dist;
+  out["cut_ms"] = cut_dist;
+  out["lod_ms"] = distribution(lod_ms);
+  out["physics_ms"] = distribution(physics_ms);
+  out["frontier_tets"] = {{"min", min_tets}, {"max", max_tets}, {"final", world.frontier().tets().size()}};
+  out["mean_cg_iterations"] = frames > 0 ? static_cast<double>(cg_iterations) / frames : 0.0;
+  out["valid"] = valid.ok();
+  if (!valid.ok()) out["problems"] = valid.problems;
+  return out;
+}
+
+void print_run_paragraph(std::ostream& out, const nlohmann::ordered_json& s) {
+  const int frames = s["frames"].get<int>();
+  std::ostringstream p;
+  if (s["interrupted"].get<bool>()) {
+    p << "Interrupted after " << frames << " of " << s["frames_requested"].get<int>() << " frames";
+  } else {
+    p << "Ran " << frames << " frames";
+  }
+  p << " of " << s["scenario"].get<std::string>() << " (" << fixed(s["simulated_seconds"], 2)
+    << " s simulated) in " << fixed(s["run_seconds"], 2) << " s, after " << fixed(s["setup_seconds"], 2)
+    << " s to mesh the organ and build its MT (" << s["mt"]["tets_total"].get<std::size_t>() << " tets in "
+    << s["mt"]["fragments"].get<std::size_t>() << " fragments). The frontier held "
+    << s["frontier_tets"]["min"].get<std::size_t>() << " to " << s["frontier_tets"]["max"].get<std::size_t>()
+    << " tets and ended with " << s["frontier_tets_final"].get<std::size_t>() << " in " << s["pieces"].get<int>()
+    << (s["pieces"].get<int>() == 1 ? " piece" : " pieces") << "; a frame took " << fixed(s["frame_ms_mean"], 2)
+    << " ms on average (p99 " << fixed(s["frame_ms_p99"], 2) << " ms), cutting " << fixed(s["cut_ms_mean"], 3)
+    << " ms (max " << fixed(s["cut_ms_max"], 3) << " ms). " << s["nan_events"].get<std::uint64_t>()
+    << " NaN events; the MT, frontier and springs are " << (s["valid"].get<bool>() ? "valid" : "NOT valid")
+    << "; state hash " << s["state_hash"].get<std::string>() << ".";
+  if (s.contains("outputs")) {
+    const auto& o = s["outputs"];
+    p << " Outputs in " << o["dir"].get<std::string>() << ": metrics.csv, summary.json";
+    if (o["snapshots"].get<int>() > 0)
+      p << ", " << o["snapshots"].get<int>() << " snapshots (" << o["pvd"].get<std::string>() << ")";
+    p << ", " << o["surface"].get<std::string>();
+    if (o.contains("trace")) p << "; scalpel trace " << o["trace"].get<std::string>();
+    p << ".";
+  }
+  out << p.str() << "\n";
+}
+
+}  // namespace mtcut::app
