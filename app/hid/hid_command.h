@@ -1,0 +1,12 @@
+#pragma once
+// `mtcut hid list` (every HID device and the profile that fits it) and
+// `mtcut hid monitor [--profile P] [--device PATH] [--seconds S] [--record-hid FILE]`
+// (live decoded samples, optionally recording the raw reports).
+
+#include <CLI/CLI.hpp>
+
+namespace mtcut::app::hid {
+
+void register_hid_command(CLI::App& app);
+
+}  // namespace mtcut::app::hid
