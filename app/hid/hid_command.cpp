@@ -7,6 +7,7 @@
 #include "app/hid/hidapi_transport.h"
 #include "app/hid/input_thread.h"
 #include "app/hid/profile_file.h"
+#include "app/hid/recording.h"
 #include "engine/input_error.h"
 
 namespace mtcut::app::hid {
@@ -110,6 +111,14 @@ void run_monitor(const MonitorOptions& options) {
   if (!options.record.empty()) std::printf("raw reports recorded to %s\n", options.record.c_str());
 }
 
+void run_replay(const std::string& recording, const std::string& profile_name) {
+  const Profile profile = load_profile(profile_name);
+  DecodeCounts c;
+  for (const Sample& s : replay_recording(recording, profile, &c)) print_sample(s);
+  std::printf("%ld reports decoded, %ld rejected (too short %ld, unknown report id %ld, out of range %ld)\n",
+              c.accepted, c.rejected(), c.too_short, c.unknown_report, c.out_of_range);
+}
+
 }  // namespace
 
 void register_hid_command(CLI::App& app) {
@@ -127,6 +136,12 @@ void register_hid_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   monitor->add_option("--record-hid", options->record, "record the raw reports to this file (.hidrec)");
   monitor->callback([options] { run_monitor(*options); });
+
+  auto replay = std::make_shared<std::pair<std::string, std::string>>();
+  CLI::App* replay_cmd = hid->add_subcommand("replay", "decode a raw recording (.hidrec) and print its poses");
+  replay_cmd->add_option("recording", replay->first, "a file written by --record-hid")->required();
+  replay_cmd->add_option("--profile", replay->second, "the profile to decode it with")->required();
+  replay_cmd->callback([replay] { run_replay(replay->first, replay->second); });
 }
 
 }  // namespace mtcut::app::hid

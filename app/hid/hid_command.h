@@ -1,7 +1,8 @@
 #pragma once
 // `mtcut hid list` (every HID device and the profile that fits it) and
 // `mtcut hid monitor [--profile P] [--device PATH] [--seconds S] [--record-hid FILE]`
-// (live decoded samples, optionally recording the raw reports).
+// (live decoded samples, optionally recording the raw reports), and
+// `mtcut hid replay REC --profile P` (a recording decoded again).
 
 #include <CLI/CLI.hpp>
 

@@ -1,6 +1,10 @@
 // End-to-end: `mtcut hid list` and `mtcut hid monitor` as a user runs them.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "app/hid/hidapi_transport.h"
 #include "tests/app/run_mtcut.h"
@@ -38,6 +42,30 @@ TEST(HidCommand, AnUnknownProfileIsAOneLineError) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("mtcut: HID profile 'trackball': no such profile"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+}
+
+TEST(HidCommand, ReplayPrintsTheDecodedPosesAndTheRejections) {
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("mtcut-hid-cmd-" + std::to_string(::getpid()) + ".hidrec")).string();
+  std::ofstream(path) << "# mtcut-hidrec 1\n"
+                         "0.000000 01 5e 01 00 00 00 00\n"  // tx = 350
+                         "0.010000 01 5e 01 00 00 00 00\n"
+                         "0.020000 03 01\n"                 // left button: blade on
+                         "0.030000 07 00\n"                 // unknown id
+                         "0.040000 unplugged\n";
+  CommandResult r = run_mtcut("hid replay " + quoted(path) + " --profile spacemouse");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out,
+            "    0.000000  tip   0.0400   0.0000   0.0600  base   0.0400   0.0000   0.1600  -\n"
+            "    0.010000  tip   0.0410   0.0000   0.0600  base   0.0410   0.0000   0.1600  -\n"
+            "    0.020000  tip   0.0420   0.0000   0.0600  base   0.0420   0.0000   0.1600  engaged\n"
+            "    0.040000  tip   0.0420   0.0000   0.0600  base   0.0420   0.0000   0.1600  -\n"
+            "3 reports decoded, 1 rejected (too short 0, unknown report id 1, out of range 0)\n");
+  std::ofstream(path) << "# mtcut-hidrec 1\n0.000000 01 zz\n";
+  r = run_mtcut("hid replay " + quoted(path) + " --profile spacemouse");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mtcut: " + path + ":2: 'zz' is not a byte in hex\n");
+  std::filesystem::remove(path);
 }
 
 TEST(HidCommand, HidNeedsASubcommand) {
