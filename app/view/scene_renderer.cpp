@@ -155,7 +155,7 @@ void SceneRenderer::draw(const ViewerSession& session, const OrbitCamera& camera
   if (s.show_blade) {
     // Over everything: the blade is mostly inside the tissue while it cuts.
     glDisable(GL_DEPTH_TEST);
-    draw_props(blade_triangles(session.last_pose(), camera.eye(), 0.01 * camera.radius()), false);
+    draw_props(blade_triangles(session.last_pose(), camera.eye(), 0.015 * camera.radius()), false);
     glEnable(GL_DEPTH_TEST);
   }
   glBindVertexArray(0);
