@@ -1,6 +1,7 @@
 #include "app/view/surface_topology.h"
 
-#include <cassert>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 
 #include "engine/tet_geometry.h"
@@ -37,7 +38,11 @@ SurfaceTopology extract_surface(const engine::Mt& mt, const engine::Frontier& fr
       s.max_level = std::max(s.max_level, level);
       for (engine::VertId v : face) {
         const std::int32_t particle = particle_of[v.index()];
-        assert(particle >= 0 && "the spring model is not built on this frontier");
+        // An invariant of the World (its model is rebuilt with the frontier):
+        // fail loudly rather than index with -1.
+        if (particle < 0)
+          throw std::logic_error("extract_surface: frontier vertex " + std::to_string(v.value) +
+                                 " has no particle (the spring model is not built on this frontier)");
         s.corner_particle.push_back(particle);
         const auto [it, inserted] = group_of.try_emplace(std::int64_t{particle} * 2 + (cut ? 1 : 0), s.groups);
         if (inserted) ++s.groups;

@@ -47,7 +47,9 @@ void play_frames(view::ViewerSession& session, view::ViewerWindow& window, int f
 void run_view(const ViewOptions& options) {
   const std::string path =
       options.scenario.empty() ? config_dir() + "/scenarios/default.toml" : options.scenario;
-  view::ViewerSession session(load_scenario(path));
+  ScenarioDef scenario = load_scenario(path);
+  view::require_display();
+  view::ViewerSession session(std::move(scenario));
   view::ViewerWindow window(session, {options.width, options.height, !options.hide_panel});
   play_frames(session, window, options.frames);
   if (!options.screenshot.empty()) {

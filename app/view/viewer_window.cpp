@@ -34,10 +34,7 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 
 GLFWwindow* open_window(int width, int height) {
   glfwSetErrorCallback(record_glfw_error);
-  const char* display = std::getenv("DISPLAY");
-  const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  if ((!display || !*display) && (!wayland || !*wayland))
-    throw engine::InputError("view: cannot open a window (no DISPLAY); run under xvfb-run");
+  require_display();
   if (!glfwInit()) throw engine::InputError("view: cannot open a window (" + last_glfw_error() + ")");
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -56,6 +53,13 @@ GLFWwindow* open_window(int width, int height) {
 }
 
 }  // namespace
+
+void require_display() {
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((!display || !*display) && (!wayland || !*wayland))
+    throw engine::InputError("view: cannot open a window (no DISPLAY); run under xvfb-run");
+}
 
 ViewerWindow::ViewerWindow(ViewerSession& session, const WindowOptions& options)
     : session_(session),

@@ -21,6 +21,11 @@ namespace mtcut::app::view {
 
 class SceneRenderer;
 
+// Throws InputError "view: cannot open a window (no DISPLAY); run under
+// xvfb-run" when neither DISPLAY nor WAYLAND_DISPLAY is set (checked before
+// the organ is built, so the user does not wait for it).
+void require_display();
+
 struct WindowOptions {
   int width = 1280, height = 720;  // pixels
   bool show_panel = true;
