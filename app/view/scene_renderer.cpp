@@ -134,7 +134,14 @@ void SceneRenderer::draw(const ViewerSession& session, const OrbitCamera& camera
 
   const ViewSettings& s = session.settings();
   const auto& env = session.world().def().environment;
-  if (s.show_floor && env.floor) draw_props(floor_triangles(*env.floor, session.lo(), session.hi()), true);
+  if (s.show_floor && env.floor) {
+    // Tissue resting on the floor lies in its plane: push the floor back so
+    // the tissue (and its wireframe) wins the depth test there.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(4.0f, 16.0f);
+    draw_props(floor_triangles(*env.floor, session.lo(), session.hi()), true);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
 
   upload_surface(session);
   glBindVertexArray(surface_vao_);

@@ -19,6 +19,8 @@ struct ViewOptions {
   std::string screenshot;
   int width = 1280, height = 720;
   bool hide_panel = false;
+  bool lod_colors = false;
+  bool wireframe = false;
 };
 
 double mean(const std::vector<double>& values) {
@@ -50,6 +52,8 @@ void run_view(const ViewOptions& options) {
   ScenarioDef scenario = load_scenario(path);
   view::require_display();
   view::ViewerSession session(std::move(scenario));
+  if (options.lod_colors) session.settings().color_mode = view::ColorMode::kLodLevels;
+  session.settings().wireframe = options.wireframe;
   view::ViewerWindow window(session, {options.width, options.height, !options.hide_panel});
   play_frames(session, window, options.frames);
   if (!options.screenshot.empty()) {
@@ -80,6 +84,8 @@ void register_view_command(CLI::App& app) {
   cmd->add_option("--width", options->width, "window width in pixels")->check(CLI::Range(64, 8192));
   cmd->add_option("--height", options->height, "window height in pixels")->check(CLI::Range(64, 8192));
   cmd->add_flag("--hide-panel", options->hide_panel, "draw the scene without the panel");
+  cmd->add_flag("--lod-colors", options->lod_colors, "colour faces by LOD level (blue finest, red coarsest)");
+  cmd->add_flag("--wireframe", options->wireframe, "draw the mesh's edges over the surface");
   cmd->callback([options] { run_view(*options); });
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "tests/test_paths.h"
 
 namespace mtcut::app::view {
@@ -128,6 +130,19 @@ TEST(ViewerSession, ResetStartsAgainWithTheNewDefinition) {
   EXPECT_GT(rig.s.topology().num_faces(), 0u);
   EXPECT_EQ(rig.s.topology().pieces, 1);
   rig.s.reset(rig.s.scenario().world);
+}
+
+TEST(ViewerSession, TheLodViewSeesSeveralLevelsOnTheSurface) {
+  Rig rig;
+  rig.s.step();  // the LOD stage moves the frontier around the parked blade
+  const SurfaceTopology& t = rig.s.topology();
+  ASSERT_GT(t.max_level, 0);
+  std::set<std::int32_t> levels(t.face_level.begin(), t.face_level.end());
+  EXPECT_GE(levels.size(), 2u) << "the surface shows one level only";
+  for (std::int32_t level : levels) {
+    EXPECT_GE(level, 0);
+    EXPECT_LE(level, t.max_level);
+  }
 }
 
 }  // namespace
