@@ -87,7 +87,12 @@ TEST(ViewCommand, ScreenshotOfTheDefaultScenarioAfterItsStroke) {
   const auto png = std::filesystem::temp_directory_path() / ("mtcut-view-" + std::to_string(::getpid()) + ".png");
   // 150 frames: the stroke ends at 1 s (60 frames), the blade is lifted at
   // 1.2 s, and a cut-off flap has had over a second to fall.
-  const Shell r = run_shell("xvfb-run -a -s '-screen 0 1280x720x24' " + quoted(mtcut_binary()) + " view " +
+  // Under the sanitizer build, leak checking is off for this child only:
+  // Mesa's software driver leaks 128 bytes at exit from a library it has
+  // already unloaded, which LeakSanitizer cannot attribute or suppress. The
+  // viewer's own logic runs leak-checked in the in-process view tests.
+  const Shell r = run_shell("ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" "
+                            "xvfb-run -a -s '-screen 0 1280x720x24' " + quoted(mtcut_binary()) + " view " +
                             quoted(source_path("config/scenarios/default.toml")) + " --frames 150 --screenshot " +
                             quoted(png.string()));
   ASSERT_EQ(r.exit_code, 0) << r.err;
