@@ -10,6 +10,7 @@
 #include "app/mesh_command.h"
 #include "app/mt_command.h"
 #include "app/run_command.h"
+#include "app/view/view_command.h"
 #include "engine/input_error.h"
 
 int main(int argc, char** argv) {
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   mtcut::app::register_run_command(app);
   mtcut::app::register_bench_command(app);
   mtcut::app::hid::register_hid_command(app);
+  mtcut::app::register_view_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,51 @@
+#pragma once
+// What the viewer draws of the tissue: the boundary faces of the current
+// frontier, each with its piece, whether a cut made it, and its LOD level,
+// laid out as corners (3 per face) that index the spring model's particles.
+//
+// Why this shape. Positions move every frame but the faces change only
+// when the frontier or the MT does. So the topology is extracted once per
+// change (here) and each frame only gathers particle positions into the
+// corners (surface_geometry.h); colours are uploaded with the topology.
+// Corners are not shared between faces so that flat shading, per-face
+// colours and the sharp rim between a cut face and the old surface need no
+// vertex splitting.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "app/view/fragment_levels.h"
+#include "app/view/frontier_pieces.h"
+#include "engine/mt/frontier.h"
+#include "engine/mt/mt.h"
+#include "sim/spring_model.h"
+
+namespace mtcut::app::view {
+
+struct SurfaceTopology {
+  std::vector<std::array<engine::VertId, 3>> faces;  // (n_faces) outward oriented
+  std::vector<engine::TetId> face_tet;               // (n_faces) the frontier tet the face bounds
+  std::vector<std::int32_t> face_piece;              // (n_faces) FrontierPieces numbering
+  std::vector<std::uint8_t> face_cut;                // (n_faces) 1: made by a cut
+  std::vector<std::int32_t> face_level;              // (n_faces) level of the tet's creating fragment
+  std::vector<std::int32_t> corner_particle;         // (3 n_faces) particle of each corner
+  // (3 n_faces) smooth-normal group of each corner: one per (particle, cut
+  // or not), so normals are averaged over the old surface and over cut
+  // faces separately and the rim of a cut stays sharp.
+  std::vector<std::int32_t> corner_group;
+  std::int32_t groups = 0;
+  int pieces = 0;
+  std::int32_t max_level = 0;
+
+  std::size_t num_faces() const { return faces.size(); }
+};
+
+// A face is a cut face when all its vertices were made by a cut, i.e. have
+// ids >= first_cut_vertex (the MT's vertex count when it was loaded).
+// `model` must be built on `frontier` (every frontier vertex a particle).
+SurfaceTopology extract_surface(const engine::Mt& mt, const engine::Frontier& frontier,
+                                const sim::SpringModel& model, const FrontierPieces& pieces,
+                                const FragmentLevels& levels, std::size_t first_cut_vertex);
+
+}  // namespace mtcut::app::view

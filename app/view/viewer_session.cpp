@@ -1,0 +1,93 @@
+#include "app/view/viewer_session.h"
+
+#include <limits>
+
+#include "engine/input_error.h"
+#include "engine/mt/mt_builder.h"
+
+namespace mtcut::app::view {
+namespace {
+
+// The organ's MT, built the way `mtcut run` builds it.
+engine::Mt build_organ(const ScenarioDef& scenario) {
+  const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
+  if (const auto report = loaded.mesh.validate(); !report.ok())
+    throw engine::InputError(scenario.mesh + ": invalid tet mesh: " + report.problems.front());
+  return engine::build_mt(loaded.mesh, scenario.world.mt);
+}
+
+bool apart(const sim::ScalpelPose& a, const sim::ScalpelPose& b) {
+  return (a.base - b.base).norm() > 1e-9 || (a.tip - b.tip).norm() > 1e-9;
+}
+
+}  // namespace
+
+ViewerSession::ViewerSession(ScenarioDef scenario)
+    : scenario_(std::move(scenario)), loaded_mt_(build_organ(scenario_)) {
+  loaded_vertices_ = loaded_mt_.num_vertices();
+  lo_ = glm::dvec3(std::numeric_limits<double>::max());
+  hi_ = glm::dvec3(std::numeric_limits<double>::lowest());
+  for (const engine::Vec3& p : loaded_mt_.positions()) {
+    lo_ = glm::min(lo_, glm::dvec3(p.x(), p.y(), p.z()));
+    hi_ = glm::max(hi_, glm::dvec3(p.x(), p.y(), p.z()));
+  }
+  reset(scenario_.world);
+}
+
+void ViewerSession::reset(const sim::WorldDef& def) {
+  world_ = std::make_unique<sim::World>(loaded_mt_, def);
+  mouse_.release();
+  last_pose_ = parked_pose();
+  engaged_sweeps_ = 0;
+  topology_stale_ = true;
+  levels_revision_ = UINT64_MAX;
+  refresh_surface();
+}
+
+sim::ScalpelPose ViewerSession::parked_pose() const {
+  const glm::dvec3 centre = 0.5 * (lo_ + hi_);
+  const double height = hi_.z - lo_.z;
+  sim::ScalpelPose pose;
+  pose.base = engine::Vec3(centre.x, centre.y, hi_.z + 1.5 * height);
+  pose.tip = engine::Vec3(centre.x, centre.y, hi_.z + 0.75 * height);
+  pose.engaged = false;
+  return pose;
+}
+
+sim::ScalpelPose ViewerSession::next_pose() {
+  if (mouse_.active()) return mouse_.take_pose();
+  if (settings_.play_script && !scenario_.scalpel.empty()) return scenario_.scalpel.pose_at(world_->time());
+  return parked_pose();
+}
+
+const sim::FrameMetrics& ViewerSession::step() {
+  const sim::ScalpelPose pose = next_pose();
+  if (pose.engaged && last_pose_.engaged && apart(pose, last_pose_)) ++engaged_sweeps_;
+  last_pose_ = pose;
+  const sim::FrameMetrics& m = world_->step(pose);
+  timings_.cut.push(m.cut_ms);
+  timings_.lod.push(m.lod_ms);
+  timings_.physics.push(m.physics_ms);
+  refresh_surface();
+  return m;
+}
+
+void ViewerSession::refresh_surface() {
+  const sim::World& w = *world_;
+  const TopologyKey key{w.frontier().version(), w.mt().revision(), w.model().num_particles(),
+                        w.frontier().tets().size()};
+  if (topology_stale_ || !(key == key_)) {
+    if (levels_revision_ != w.mt().revision()) {
+      levels_ = compute_fragment_levels(w.mt());
+      levels_revision_ = w.mt().revision();
+    }
+    const FrontierPieces pieces = find_frontier_pieces(w.mt(), w.frontier());
+    topology_ = extract_surface(w.mt(), w.frontier(), w.model(), pieces, levels_, loaded_vertices_);
+    key_ = key;
+    topology_stale_ = false;
+    ++topology_version_;
+  }
+  update_surface_geometry(topology_, w.state().x, settings_.shading, geometry_);
+}
+
+}  // namespace mtcut::app::view
