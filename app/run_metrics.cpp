@@ -27,8 +27,7 @@ int PieceCounter::count(const sim::World& world) {
 MetricsRow record_frame(const sim::World& world, PieceCounter& pieces) {
   MetricsRow row;
   row.frame = world.last_frame();
-  // TODO(issue 5): World::cutter() -- the cutter's queued jobs, once the World owns the cutter.
-  row.cut_jobs_pending = 0;
+  row.cut_jobs_pending = world.last_frame().cut_jobs_pending;
   row.kinetic_energy = kinetic_energy(world.model(), world.state());
   row.pieces = pieces.count(world);
   return row;

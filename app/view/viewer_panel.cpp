@@ -58,8 +58,7 @@ void ViewerPanel::draw_model(const ViewerSession& session) {
   ImGui::Text("pieces: %d   surface faces: %zu", session.topology().pieces, session.topology().num_faces());
   ImGui::Text("MT: %zu vertices (%zu made by cuts), %zu live tets", w.mt().num_vertices(),
               w.mt().num_vertices() - session.loaded_vertices(), w.mt().num_live_tets());
-  // TODO(issue 5): pending cut jobs, once the World exposes its time-critical cutter.
-  ImGui::Text("pending cut jobs: 0");
+  ImGui::Text("pending cut jobs: %zu%s", w.last_frame().cut_jobs_pending, w.cutter().frozen() ? " (resolution frozen)" : "");
   if (w.nan_events() > 0) ImGui::Text("refused steps (NaN or explosion): %llu", static_cast<unsigned long long>(w.nan_events()));
 }
 
