@@ -6,6 +6,8 @@
 #include <numeric>
 #include <sstream>
 
+#include "app/run_piece_report.h"
+
 namespace mtcut::app {
 namespace {
 
@@ -44,6 +46,21 @@ std::string fixed(const nlohmann::ordered_json& value, int digits) {
   std::ostringstream s;
   s << std::fixed << std::setprecision(digits) << value.get<double>();
   return s.str();
+}
+
+// " (piece 1 free, 0.9 to 2.1 cm above the floor, ...)": where the pieces
+// that nothing holds came to rest, or "" when every piece is held.
+std::string piece_places(const nlohmann::ordered_json& s) {
+  if (!s.contains("piece_details")) return "";
+  std::ostringstream p;
+  const auto& pieces = s["piece_details"];
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (pieces[i]["held_particles"].get<std::size_t>() > 0) continue;
+    p << (p.tellp() == 0 ? " (" : "; ") << "piece " << i << " free, z " << fixed(pieces[i]["lowest_z"], 3) << " to "
+      << fixed(pieces[i]["highest_z"], 3) << " m";
+  }
+  if (p.tellp() > 0) p << ")";
+  return p.str();
 }
 
 }  // namespace
@@ -95,6 +112,15 @@ nlohmann::ordered_json summarize_run(const ScenarioDef& scenario, const RunRecor
   out["physics_ms"] = distribution(physics_ms);
   out["frontier_tets"] = {{"min", min_tets}, {"max", max_tets}, {"final", world.frontier().tets().size()}};
   out["mean_cg_iterations"] = frames > 0 ? static_cast<double>(cg_iterations) / frames : 0.0;
+  nlohmann::ordered_json pieces = nlohmann::ordered_json::array();
+  for (const PieceReport& piece : report_pieces(world))
+    pieces.push_back({{"tets", piece.tets},
+                      {"rest_volume", piece.rest_volume},
+                      {"centroid", {piece.centroid.x(), piece.centroid.y(), piece.centroid.z()}},
+                      {"lowest_z", piece.lowest_z},
+                      {"highest_z", piece.highest_z},
+                      {"held_particles", piece.held_particles}});
+  out["piece_details"] = pieces;
   out["valid"] = valid.ok();
   if (!valid.ok()) out["problems"] = valid.problems;
   return out;
@@ -114,7 +140,7 @@ void print_run_paragraph(std::ostream& out, const nlohmann::ordered_json& s) {
     << s["mt"]["fragments"].get<std::size_t>() << " fragments). The frontier held "
     << s["frontier_tets"]["min"].get<std::size_t>() << " to " << s["frontier_tets"]["max"].get<std::size_t>()
     << " tets and ended with " << s["frontier_tets_final"].get<std::size_t>() << " in " << s["pieces"].get<int>()
-    << (s["pieces"].get<int>() == 1 ? " piece" : " pieces") << "; a frame took " << fixed(s["frame_ms_mean"], 2)
+    << (s["pieces"].get<int>() == 1 ? " piece" : " pieces") << piece_places(s) << "; a frame took " << fixed(s["frame_ms_mean"], 2)
     << " ms on average (p99 " << fixed(s["frame_ms_p99"], 2) << " ms), cutting " << fixed(s["cut_ms_mean"], 3)
     << " ms (max " << fixed(s["cut_ms_max"], 3) << " ms). " << s["nan_events"].get<std::uint64_t>()
     << " NaN events; the MT, frontier and springs are " << (s["valid"].get<bool>() ? "valid" : "NOT valid")

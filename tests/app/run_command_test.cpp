@@ -46,6 +46,38 @@ TEST_F(RunCommand, SameScenarioTwiceGivesTheSameStateHash) {
   EXPECT_EQ(nlohmann::json::parse(a.out)["state_hash"], nlohmann::json::parse(b.out)["state_hash"]);
 }
 
+// The golden state hash of the whole default scenario. A change that moves
+// any particle by one bit changes it: when that is intended (a new LUT, a
+// new integrator, a new scenario), run
+//   build/test/mtcut run config/scenarios/default.toml --json
+// and put its state_hash here in the same commit, saying why. (x86-64 with
+// SSE2 and no FMA contraction, as Debian's g++ builds by default.)
+constexpr const char* kDefaultScenarioGoldenHash = "db2da1979793602a";
+
+TEST_F(RunCommand, DefaultScenarioCutsAFlapThatSettlesOnTheFloorWithTheGoldenHash) {
+  const CommandResult r = run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) + " --json --out " +
+                                    quoted(path("out")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(out["valid"].get<bool>()) << out.dump(1);
+  EXPECT_EQ(out["nan_events"].get<int>(), 0);
+  ASSERT_EQ(out["pieces"].get<int>(), 2);
+  const auto& pieces = out["piece_details"];
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_GT(pieces[0]["held_particles"].get<int>(), 0) << "the organ is held at its back";
+  EXPECT_EQ(pieces[1]["held_particles"].get<int>(), 0) << "the flap is free";
+  // The flap is a real part of the front end (the cap beyond x = 3 cm of
+  // the ellipsoid is about a fifth of it), not a sliver.
+  const double organ = pieces[0]["rest_volume"].get<double>(), flap = pieces[1]["rest_volume"].get<double>();
+  EXPECT_GT(flap, 0.05 * (organ + flap));
+  // It lies on the floor (z = -3.6 cm), below the organ's top, in front.
+  EXPECT_NEAR(pieces[1]["lowest_z"].get<double>(), -0.036, 1e-3);
+  EXPECT_LT(pieces[1]["highest_z"].get<double>(), 0.0);
+  EXPECT_GT(pieces[1]["centroid"][0].get<double>(), pieces[0]["centroid"][0].get<double>());
+  EXPECT_EQ(out["state_hash"].get<std::string>(), kDefaultScenarioGoldenHash)
+      << "the default scenario's outcome changed: if intended, update kDefaultScenarioGoldenHash (see above)";
+}
+
 TEST_F(RunCommand, BadScenariosGiveOneLineWithFileAndLine) {
   expect_rejected(variant("[lod]\n", "[lod]\nnear_radiu = 0.01\n"), "bad.toml:");
   expect_rejected(variant("[lod]\n", "[lod]\nnear_radiu = 0.01\n"), "unknown key 'lod.near_radiu'");

@@ -55,7 +55,14 @@ class RunFixture : public ::testing::Test {
   }
   // The default scenario, with a snapshot every `every` frames.
   std::string with_snapshots(int every) const {
-    return variant("[output]\n", "[output]\nsnapshot_every = " + std::to_string(every) + "\n");
+    const std::string key = "snapshot_every = ";
+    const auto at = base_.find(key);
+    if (at == std::string::npos)
+      return variant("[output]\n", "[output]\n" + key + std::to_string(every) + "\n");
+    std::string text = base_;
+    const auto value = at + key.size();
+    text.replace(value, text.find_first_not_of("0123456789", value) - value, std::to_string(every));
+    return text;
   }
 
   std::filesystem::path dir_;

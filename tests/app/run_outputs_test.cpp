@@ -178,8 +178,8 @@ TEST_F(RunOutputs, EveryOutputExistsAndParses) {
 
 TEST_F(RunOutputs, NoSnapshotsWhenTheScenarioAsksForNone) {
   const std::string out = path("out");
-  const CommandResult r = run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) +
-                                    " --frames 2 --out " + quoted(out));
+  const CommandResult r = run_mtcut("run " + quoted(write("none.toml", with_snapshots(0))) + " --frames 2 --out " +
+                                    quoted(out));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_FALSE(fs::exists(out + "/snapshots.pvd"));
   EXPECT_TRUE(fs::exists(out + "/metrics.csv"));
