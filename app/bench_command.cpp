@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "app/bench_cut.h"
 #include "app/bench_sim.h"
 #include "app/json_report.h"
 
@@ -31,6 +32,21 @@ void register_bench_command(CLI::App& app) {
   sim->add_option("--runs", sim_def->runs, "timed batches (median reported)")->capture_default_str()->check(CLI::PositiveNumber);
   sim->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
   sim->callback([sim_def, json] { print(run_sim_bench(*sim_def), *json); });
+
+  auto cut_def = std::make_shared<CutBenchDef>();
+  CLI::App* cut = bench->add_subcommand(
+      "cut", "The single-resolution cutter, LUT and 1:17, on the same complete and partial planar cuts of the real "
+             "liver (liver2.obj) and the builtin organ: split and new tets, ns per split tet, their ratio");
+  cut->add_option("--mesh", cut_def->liver, "the real mesh to cut instead of ../shared/meshes/liver2.obj");
+  cut->add_option("--organ", cut_def->organ, "the second mesh: builtin:NAME or a file")->capture_default_str();
+  cut->add_option("--tets", cut_def->organ_tets, "target tet count of a builtin organ")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cut->add_option("--runs", cut_def->runs, "timed runs, each cut on a fresh copy (median reported)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cut->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
+  cut->callback([cut_def, json] { print(run_cut_bench(*cut_def), *json); });
 }
 
 }  // namespace mtcut::app
