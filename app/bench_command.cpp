@@ -4,6 +4,7 @@
 
 #include "app/bench_cut.h"
 #include "app/bench_sim.h"
+#include "app/bench_table1.h"
 #include "app/json_report.h"
 
 namespace mtcut::app {
@@ -47,6 +48,17 @@ void register_bench_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cut->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
   cut->callback([cut_def, json] { print(run_cut_bench(*cut_def), *json); });
+
+  auto table1_def = std::make_shared<Table1BenchDef>();
+  CLI::App* table1 = bench->add_subcommand(
+      "table1", "The paper's Table 1 on the --preset paper MT: five planar cuts of growing size, the last one "
+                "separating the object; split and DAG update times beside the paper's");
+  table1->add_option("--runs", table1_def->runs, "timed runs per row, each on a fresh copy of the MT (median reported)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  table1->add_option("--markdown", table1_def->markdown, "also write the table as markdown, with the machine");
+  table1->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
+  table1->callback([table1_def, json] { print(run_table1_bench(*table1_def), *json); });
 }
 
 }  // namespace mtcut::app
