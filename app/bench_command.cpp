@@ -2,7 +2,9 @@
 
 #include <iostream>
 
+#include "app/bench_cut.h"
 #include "app/bench_sim.h"
+#include "app/bench_table1.h"
 #include "app/json_report.h"
 
 namespace mtcut::app {
@@ -31,6 +33,32 @@ void register_bench_command(CLI::App& app) {
   sim->add_option("--runs", sim_def->runs, "timed batches (median reported)")->capture_default_str()->check(CLI::PositiveNumber);
   sim->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
   sim->callback([sim_def, json] { print(run_sim_bench(*sim_def), *json); });
+
+  auto cut_def = std::make_shared<CutBenchDef>();
+  CLI::App* cut = bench->add_subcommand(
+      "cut", "The single-resolution cutter, LUT and 1:17, on the same complete and partial planar cuts of the real "
+             "liver (liver2.obj) and the builtin organ: split and new tets, ns per split tet, their ratio");
+  cut->add_option("--mesh", cut_def->liver, "the real mesh to cut instead of ../shared/meshes/liver2.obj");
+  cut->add_option("--organ", cut_def->organ, "the second mesh: builtin:NAME or a file")->capture_default_str();
+  cut->add_option("--tets", cut_def->organ_tets, "target tet count of a builtin organ")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cut->add_option("--runs", cut_def->runs, "timed runs, each cut on a fresh copy (median reported)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cut->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
+  cut->callback([cut_def, json] { print(run_cut_bench(*cut_def), *json); });
+
+  auto table1_def = std::make_shared<Table1BenchDef>();
+  CLI::App* table1 = bench->add_subcommand(
+      "table1", "The paper's Table 1 on the --preset paper MT: five planar cuts of growing size, the last one "
+                "separating the object; split and DAG update times beside the paper's");
+  table1->add_option("--runs", table1_def->runs, "timed runs per row, each on a fresh copy of the MT (median reported)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  table1->add_option("--markdown", table1_def->markdown, "also write the table as markdown, with the machine");
+  table1->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
+  table1->callback([table1_def, json] { print(run_table1_bench(*table1_def), *json); });
 }
 
 }  // namespace mtcut::app

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "app/bench_command.h"
+#include "app/cut_command.h"
 #include "app/hid/hid_command.h"
 #include "app/mesh_command.h"
 #include "app/mt_command.h"
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
 
   mtcut::app::register_mesh_command(app);
   mtcut::app::register_mt_command(app);
+  mtcut::app::register_cut_command(app);
   mtcut::app::register_run_command(app);
   mtcut::app::register_bench_command(app);
   mtcut::app::hid::register_hid_command(app);

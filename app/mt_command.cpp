@@ -33,11 +33,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 void run_mt(MtOptions& options) {
   std::string spec = options.input;
   if (!options.preset.empty()) {
-    const auto preset = engine::find_mt_preset(options.preset);
-    if (!preset) throw engine::InputError("--preset " + options.preset + ": unknown preset (known: paper)");
-    if (spec.empty()) spec = preset->mesh_spec;
-    options.load = preset->mesh;
-    options.build = preset->build;
+    const engine::MtPreset preset = require_mt_preset(options.preset);
+    if (spec.empty()) spec = preset.mesh_spec;
+    options.load = preset.mesh;
+    options.build = preset.build;
   }
   if (spec.empty()) throw engine::InputError("give a mesh (builtin:NAME or a file) or --preset");
   if (!options.size.empty()) {
@@ -46,16 +45,8 @@ void run_mt(MtOptions& options) {
   }
   if (options.no_preserve_boundary) options.build.preserve_boundary = false;
 
-  auto start = std::chrono::steady_clock::now();
-  const engine::LoadedMesh loaded = engine::load_mesh(spec, options.load);
-  const double mesh_seconds = seconds_since(start);
-  if (const auto report = loaded.mesh.validate(); !report.ok())
-    throw engine::InputError(spec + ": invalid tet mesh: " + report.problems.front());
-
-  engine::MtBuildReport build_report;
-  start = std::chrono::steady_clock::now();
-  const engine::Mt mt = engine::build_mt(loaded.mesh, options.build, &build_report);
-  const double build_seconds = seconds_since(start);
+  const BuiltMt built = build_mt_from(spec, options.load, options.build);
+  const engine::Mt& mt = built.mt;
   const engine::MtStats stats = engine::compute_mt_stats(mt);
 
   nlohmann::ordered_json out = {{"input", spec}};
@@ -66,14 +57,14 @@ void run_mt(MtOptions& options) {
   out["dag_depth"] = stats.dag_depth;
   out["finest_tets"] = stats.finest_tets;
   out["coarsest_tets"] = stats.coarsest_tets;
-  out["collapses"] = build_report.collapses;
-  out["rounds"] = build_report.rounds;
+  out["collapses"] = built.report.collapses;
+  out["rounds"] = built.report.rounds;
   out["preserve_boundary"] = options.build.preserve_boundary;
   out["megabytes"] = static_cast<double>(stats.bytes) / (1024.0 * 1024.0);
-  out["mesh_seconds"] = mesh_seconds;
-  out["build_seconds"] = build_seconds;
+  out["mesh_seconds"] = built.mesh_seconds;
+  out["build_seconds"] = built.build_seconds;
   if (!options.skip_validation) {
-    start = std::chrono::steady_clock::now();
+    const auto start = std::chrono::steady_clock::now();
     const engine::ValidationReport report = mt.validate();
     out["valid"] = report.ok();
     out["validate_seconds"] = seconds_since(start);
@@ -89,6 +80,31 @@ void run_mt(MtOptions& options) {
 }
 
 }  // namespace
+
+engine::MtPreset require_mt_preset(const std::string& name) {
+  const auto preset = engine::find_mt_preset(name);
+  if (!preset) throw engine::InputError("--preset " + name + ": unknown preset (known: paper)");
+  return *preset;
+}
+
+BuiltMt build_mt_from(const std::string& spec, const engine::MeshLoadDef& load, const engine::MtBuildOptions& build) {
+  auto start = std::chrono::steady_clock::now();
+  const engine::LoadedMesh loaded = engine::load_mesh(spec, load);
+  const double mesh_seconds = seconds_since(start);
+  if (const auto report = loaded.mesh.validate(); !report.ok())
+    throw engine::InputError(spec + ": invalid tet mesh: " + report.problems.front());
+  BuiltMt built;
+  start = std::chrono::steady_clock::now();
+  built.mt = engine::build_mt(loaded.mesh, build, &built.report);
+  built.build_seconds = seconds_since(start);
+  built.mesh_seconds = mesh_seconds;
+  return built;
+}
+
+BuiltMt build_preset_mt(const std::string& name) {
+  const engine::MtPreset preset = require_mt_preset(name);
+  return build_mt_from(preset.mesh_spec, preset.mesh, preset.build);
+}
 
 void register_mt_command(CLI::App& app) {
   auto options = std::make_shared<MtOptions>();

@@ -1,0 +1,116 @@
+#include "app/cut_command.h"
+
+#include <iostream>
+
+#include "app/json_report.h"
+#include "app/mesh_command.h"
+#include "cut/cut_polygon.h"
+#include "cut/split_table.h"
+#include "engine/input_error.h"
+#include "engine/mesh_loader.h"
+
+namespace mtcut::app {
+namespace {
+
+struct CutOptions {
+  std::string input;
+  std::string polygon;
+  std::string scheme = "lut";
+  std::string output;
+  engine::MeshLoadDef load;
+  std::vector<double> size;
+  cut::CutterDef cutter;
+  bool json = false;
+};
+
+void run_cut(CutOptions& options) {
+  const auto scheme = cut::parse_scheme(options.scheme);
+  if (!scheme) throw engine::InputError("--scheme " + options.scheme + ": unknown scheme (known: lut, bielser17)");
+  options.cutter.scheme = *scheme;
+  // The polygon first: a typo in it should not wait for the meshing.
+  const cut::CutPolygon polygon = cut::parse_cut_polygon(options.polygon, "--polygon");
+  if (!options.size.empty()) {
+    if (options.size.size() != 3) throw engine::InputError("--size: give three extents x,y,z");
+    options.load.builtin_size = engine::Vec3(options.size[0], options.size[1], options.size[2]);
+  }
+  engine::LoadedMesh loaded = engine::load_mesh(options.input, options.load);
+  if (const auto report = loaded.mesh.validate(); !report.ok())
+    throw engine::InputError(options.input + ": invalid tet mesh: " + report.problems.front());
+  const std::size_t tets_before = loaded.mesh.num_tets();
+  const std::size_t vertices_before = loaded.mesh.num_vertices();
+
+  const cut::MeshCutResult result = cut::cut_mesh(loaded.mesh, polygon, options.cutter);
+  const engine::ValidationReport valid = loaded.mesh.validate();
+  if (!valid.ok())
+    throw engine::InputError(options.input + ": the cut left an invalid mesh (an internal error; please report it): " +
+                             valid.problems.front());
+  if (!options.output.empty()) write_mesh_output(loaded.mesh, options.output);
+
+  nlohmann::ordered_json out = {{"input", options.input},
+                                {"scheme", cut::scheme_name(options.cutter.scheme)},
+                                {"polygon_corners", polygon.size()},
+                                {"tets_before", tets_before},
+                                {"vertices_before", vertices_before}};
+  out.update(cut_stats_json(result.stats));
+  out["tets"] = loaded.mesh.num_tets();
+  out["vertices"] = loaded.mesh.num_vertices();
+  if (!options.output.empty()) out["output"] = options.output;
+  if (options.json) {
+    std::cout << out.dump() << "\n";
+  } else {
+    print_human(std::cout, out);
+  }
+}
+
+}  // namespace
+
+nlohmann::ordered_json cut_stats_json(const cut::CutStats& stats) {
+  nlohmann::ordered_json cases = nlohmann::ordered_json::object();
+  for (std::size_t c = 0; c < cut::kCaseCount; ++c)
+    cases[cut::case_name(static_cast<cut::CutCase>(c))] = stats.per_case[c];
+  nlohmann::ordered_json out = {{"split_tets", stats.split_tets},
+                                {"new_tets", stats.new_tets},
+                                {"new_tets_per_split_tet", stats.new_tets_per_split_tet()},
+                                {"cases", cases},
+                                {"pieces", stats.pieces},
+                                {"min_dihedral_deg", nullptr},
+                                {"new_vertices", stats.new_vertices},
+                                {"split_vertices", stats.split_vertices},
+                                {"snapped_vertices", stats.snapped_vertices},
+                                {"seconds", stats.seconds}};
+  if (stats.new_tets > 0) out["min_dihedral_deg"] = stats.min_dihedral_deg;
+  return out;
+}
+
+void register_cut_command(CLI::App& app) {
+  auto options = std::make_shared<CutOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "cut",
+      "Cut a single-resolution tet mesh by one planar convex polygon; write it; print the split tets, the new tets, "
+      "the cases, the pieces.\n"
+      "  mtcut cut builtin:box --tets 2000 --polygon \"0,-1,-1;0,1,-1;0,1,1;0,-1,1\" --json\n"
+      "  mtcut cut ../shared/meshes/liver.msh --polygon \"...\" --scheme bielser17 -o cut.vtu");
+  cmd->add_option("input", options->input, "builtin:NAME, a surface to mesh, or a tet mesh file (as for `mtcut mesh`)")
+      ->required();
+  cmd->add_option("--polygon", options->polygon,
+                  "the cut: corners \"x,y,z;x,y,z;...\" (at least 3, in order, planar and convex), in metres")
+      ->required();
+  cmd->add_option("--scheme", options->scheme, "split scheme: lut (the paper's) or bielser17 (the 1:17 reference)")
+      ->capture_default_str();
+  cmd->add_option("--snap", options->cutter.snap,
+                  "cut points nearer a vertex than this fraction of the edge snap onto it")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.45));
+  cmd->add_option("-o,--output", options->output,
+                  "write the cut mesh: .vtu (with quality), .node/.ele, or its boundary as .obj/.off/.stl/.ply");
+  cmd->add_option("--tets", options->load.builtin_tets, "target tet count of a builtin shape")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--size", options->size, "extents x,y,z of a builtin shape in metres")->delimiter(',');
+  cmd->add_option("--max-volume", options->load.meshing.max_volume, "largest tet volume when meshing a surface")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--json", options->json, "print one JSON object");
+  cmd->callback([options] { run_cut(*options); });
+}
+
+}  // namespace mtcut::app
