@@ -3,7 +3,7 @@
 #include <ostream>
 
 #include "app/run_format.h"
-#include "app/run_pieces.h"
+#include "app/pieces.h"
 #include "engine/atomic_file.h"
 
 namespace mtcut::app {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "app/run_pieces.h"
+#include "app/pieces.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::app {

@@ -6,7 +6,8 @@
 #include <ostream>
 
 #include "app/run_format.h"
-#include "app/run_pieces.h"
+#include "app/fragment_levels.h"
+#include "app/pieces.h"
 #include "engine/atomic_file.h"
 #include "engine/io/mesh_file.h"
 #include "engine/surface_mesh.h"
@@ -36,16 +37,6 @@ DeformedFrontier deform_frontier(const sim::World& world) {
     for (std::size_t i = 0; i < out.vertex_ids.size(); ++i) out.mesh.positions[i] = deformed[out.vertex_ids[i].index()];
   }
   return out;
-}
-
-std::vector<std::int32_t> fragment_levels(const engine::Mt& mt) {
-  std::vector<std::int32_t> level(mt.num_fragments(), -1);
-  for (const engine::FragId f : mt.topological_order()) {
-    std::int32_t l = 0;
-    for (const engine::FragId p : mt.parents(f)) l = std::max(l, level[p.index()] + 1);
-    level[f.index()] = l;
-  }
-  return level;
 }
 
 SnapshotSeries::SnapshotSeries(std::string dir, std::size_t first_cut_vertex)

@@ -24,10 +24,6 @@ struct DeformedFrontier {
 
 DeformedFrontier deform_frontier(const sim::World& world);
 
-// (n_fragments) level of each fragment: the root (the finest mesh) is 0, a
-// fragment is one above the highest of its parents; -1 off the DAG.
-std::vector<std::int32_t> fragment_levels(const engine::Mt& mt);
-
 class SnapshotSeries {
  public:
   // Files go into dir (which exists). MT vertices with ids >= first_cut_vertex

@@ -9,8 +9,8 @@
 namespace mtcut::app::view {
 
 SurfaceTopology extract_surface(const engine::Mt& mt, const engine::Frontier& frontier,
-                                const sim::SpringModel& model, const FrontierPieces& pieces,
-                                const FragmentLevels& levels, std::size_t first_cut_vertex) {
+                                const sim::SpringModel& model, const PieceLabels& pieces,
+                                const std::vector<std::int32_t>& fragment_levels, std::size_t first_cut_vertex) {
   std::vector<std::int32_t> particle_of(mt.num_vertices(), -1);
   for (std::size_t p = 0; p < model.particle_vertex.size(); ++p)
     particle_of[model.particle_vertex[p].index()] = static_cast<std::int32_t>(p);
@@ -23,7 +23,7 @@ SurfaceTopology extract_surface(const engine::Mt& mt, const engine::Frontier& fr
     if (mask == 0) continue;
     const engine::Tet& tet = mt.tet(t);
     const engine::FragId birth = mt.birth(t);
-    const std::int32_t level = levels.level.at(birth.index());
+    const std::int32_t level = fragment_levels.at(birth.index());
     for (int f = 0; f < 4; ++f) {
       if (!(mask & (1u << f))) continue;
       const std::array<engine::VertId, 3> face = {tet[engine::kTetFaces[f][0]], tet[engine::kTetFaces[f][1]],

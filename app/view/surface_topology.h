@@ -15,8 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "app/view/fragment_levels.h"
-#include "app/view/frontier_pieces.h"
+#include "app/pieces.h"
 #include "engine/mt/frontier.h"
 #include "engine/mt/mt.h"
 #include "sim/spring_model.h"
@@ -26,7 +25,7 @@ namespace mtcut::app::view {
 struct SurfaceTopology {
   std::vector<std::array<engine::VertId, 3>> faces;  // (n_faces) outward oriented
   std::vector<engine::TetId> face_tet;               // (n_faces) the frontier tet the face bounds
-  std::vector<std::int32_t> face_piece;              // (n_faces) FrontierPieces numbering
+  std::vector<std::int32_t> face_piece;              // (n_faces) label_frontier_pieces numbering
   std::vector<std::uint8_t> face_cut;                // (n_faces) 1: made by a cut
   std::vector<std::int32_t> face_level;              // (n_faces) level of the tet's creating fragment
   std::vector<std::int32_t> corner_particle;         // (3 n_faces) particle of each corner
@@ -43,9 +42,10 @@ struct SurfaceTopology {
 
 // A face is a cut face when all its vertices were made by a cut, i.e. have
 // ids >= first_cut_vertex (the MT's vertex count when it was loaded).
+// `pieces` from label_frontier_pieces, `fragment_levels` from fragment_levels().
 // `model` must be built on `frontier` (every frontier vertex a particle).
 SurfaceTopology extract_surface(const engine::Mt& mt, const engine::Frontier& frontier,
-                                const sim::SpringModel& model, const FrontierPieces& pieces,
-                                const FragmentLevels& levels, std::size_t first_cut_vertex);
+                                const sim::SpringModel& model, const PieceLabels& pieces,
+                                const std::vector<std::int32_t>& fragment_levels, std::size_t first_cut_vertex);
 
 }  // namespace mtcut::app::view

@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "app/fragment_levels.h"
 #include "engine/input_error.h"
 #include "engine/mt/mt_builder.h"
 
@@ -78,10 +79,10 @@ void ViewerSession::refresh_surface() {
                         w.frontier().tets().size()};
   if (topology_stale_ || !(key == key_)) {
     if (levels_revision_ != w.mt().revision()) {
-      levels_ = compute_fragment_levels(w.mt());
+      levels_ = fragment_levels(w.mt());
       levels_revision_ = w.mt().revision();
     }
-    const FrontierPieces pieces = find_frontier_pieces(w.mt(), w.frontier());
+    const PieceLabels pieces = label_frontier_pieces(w.mt(), w.frontier());
     topology_ = extract_surface(w.mt(), w.frontier(), w.model(), pieces, levels_, loaded_vertices_);
     key_ = key;
     topology_stale_ = false;

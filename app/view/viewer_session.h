@@ -91,7 +91,7 @@ class ViewerSession {
 
   SurfaceTopology topology_;
   SurfaceGeometry geometry_;
-  FragmentLevels levels_;
+  std::vector<std::int32_t> levels_;  // (n_fragments) fragment_levels at levels_revision_
   std::uint64_t topology_version_ = 0;
   // What the topology was extracted from: re-extract when any differs.
   struct TopologyKey {

@@ -4,6 +4,7 @@
 
 #include <set>
 
+#include "app/fragment_levels.h"
 #include "app/view/surface_geometry.h"
 #include "tests/app/view/tiny_mt.h"
 
@@ -17,9 +18,9 @@ struct Extracted {
 
 Extracted extract(std::size_t first_cut_vertex) {
   Extracted e{test::make_tiny_world(test::three_piece_mesh()), {}};
-  const FrontierPieces pieces = find_frontier_pieces(e.world.mt, e.world.frontier);
-  e.topology = extract_surface(e.world.mt, e.world.frontier, e.world.model, pieces,
-                               compute_fragment_levels(e.world.mt), first_cut_vertex);
+  const PieceLabels pieces = label_frontier_pieces(e.world.mt, e.world.frontier);
+  e.topology = extract_surface(e.world.mt, e.world.frontier, e.world.model, pieces, fragment_levels(e.world.mt),
+                               first_cut_vertex);
   return e;
 }
 

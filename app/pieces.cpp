@@ -1,4 +1,4 @@
-#include "app/run_pieces.h"
+#include "app/pieces.h"
 
 #include <algorithm>
 #include <numeric>
@@ -45,6 +45,18 @@ PieceLabels label_pieces(const engine::TetMesh& mesh) {
   }
   labels.tet_piece.resize(n);
   for (std::size_t t = 0; t < n; ++t) labels.tet_piece[t] = rank[static_cast<std::size_t>(component[t])];
+  return labels;
+}
+
+PieceLabels label_frontier_pieces(const engine::Mt& mt, const engine::Frontier& frontier) {
+  PieceLabels mesh_labels = label_pieces(frontier.to_tet_mesh(mt));
+  // to_tet_mesh writes the frontier's tets in ascending id order.
+  std::vector<engine::TetId> ids(frontier.tets().begin(), frontier.tets().end());
+  std::sort(ids.begin(), ids.end());
+  PieceLabels labels;
+  labels.tet_piece.assign(mt.num_tets(), -1);
+  for (std::size_t i = 0; i < ids.size(); ++i) labels.tet_piece[ids[i].index()] = mesh_labels.tet_piece[i];
+  labels.piece_tets = std::move(mesh_labels.piece_tets);
   return labels;
 }
 
