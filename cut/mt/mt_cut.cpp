@@ -362,6 +362,7 @@ MtChangeReport cut_mt(Mt& mt, TetBvh& bvh, const CutPolygon& polygon, std::vecto
                       const CutMtOptions& options, SplitTable* table) {
   SplitTable local(options.def.scheme);
   SplitTable& recipes = table ? *table : local;
+  bvh.refresh(mt);  // before the search; the cut's own edits never rebuild it
   MtCut cut(mt, bvh, polygon, std::move(geometry), options.def, recipes);
   std::vector<std::size_t> order(cut.jobs().size());
   std::iota(order.begin(), order.end(), 0);

@@ -35,9 +35,10 @@ void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {
   }
 }
 
-void TimeCriticalCutter::start_next(const Mt& mt, const TetBvh& bvh, const Frontier& frontier) {
+void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& frontier) {
   Queued q = std::move(queue_.front());
   queue_.pop_front();
+  bvh.refresh(mt);  // between two cuts: the index edits of the last one never rebuild mid-cut
   Active a;
   a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, std::move(q.geometry), def_.cut, table_);
   const auto jobs = a.cut->jobs();

@@ -101,7 +101,7 @@ class TimeCriticalCutter {
     std::size_t visible = 0;          // leading entries of `order` that are visible
     std::size_t next = 0;             // next entry of `order`
   };
-  void start_next(const Mt& mt, const TetBvh& bvh, const Frontier& frontier);
+  void start_next(const Mt& mt, TetBvh& bvh, const Frontier& frontier);
   void extend_geometry(std::span<const MadeVertex> made);
 
   TimeCriticalCutterDef def_;

@@ -125,11 +125,13 @@ void TetBvh::insert(const Mt& mt, TetId t) {
 
 void TetBvh::replace(const Mt& mt, TetId old, std::span<const TetId> pieces) {
   remove(old);
-  if (edits_ + pieces.size() > indexed_ / 2 + 64) {
-    rebuild(mt);  // takes every live tet, the pieces included
-    return;
-  }
   for (TetId t : pieces) insert(mt, t);
+}
+
+bool TetBvh::refresh(const Mt& mt) {
+  if (!worn()) return false;
+  rebuild(mt);
+  return true;
 }
 
 }  // namespace mtcut::engine

@@ -9,8 +9,8 @@
 // frontier query is the same walk with a membership filter (a point lies
 // in one tet per resolution that differs there, a few dozen at most). The
 // cutter's replacements are applied in place (remove + insert, which only
-// grows boxes on one root-to-leaf path) and the tree is rebuilt once the
-// edits outnumber half the tets.
+// grows boxes on one root-to-leaf path) and the tree is rebuilt, by its
+// owner between cuts, once the edits outnumber half the tets.
 
 #include <cstdint>
 #include <span>
@@ -69,10 +69,19 @@ class TetBvh {
 
   // Edits that follow the MT's, made after it: t left the MT / t joined it;
   // `pieces` took the place of `old` (the cutter's R(t); old already killed,
-  // pieces already added). Rebuilds when edits pile up.
+  // pieces already added). Edits never rebuild: they are cheap (one
+  // root-to-leaf path), and a rebuild (about 10 ms at 60k tets) must not
+  // land inside the cutter's time-critical budget. The owner calls refresh()
+  // at a quiet moment instead.
   void remove(TetId t);
   void insert(const Mt& mt, TetId t);
   void replace(const Mt& mt, TetId old, std::span<const TetId> pieces);
+
+  // The edits since the last rebuild outnumber half the indexed tets:
+  // queries have slowed down enough that a rebuild pays for itself.
+  bool worn() const { return edits_ > indexed_ / 2 + 64; }
+  // Rebuilds when worn(); returns whether it did.
+  bool refresh(const Mt& mt);
 
  private:
   template <class Visit>
