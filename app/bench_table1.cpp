@@ -24,6 +24,14 @@ std::string cpu_model() {
   return "unknown";
 }
 
+// The 1-minute load average (other jobs sharing the cores), -1 if unknown.
+double load_average() {
+  std::ifstream in("/proc/loadavg");
+  double load = -1;
+  in >> load;
+  return in ? load : -1.0;
+}
+
 std::string compiler() {
 #if defined(__clang__)
   return std::string("clang ") + __clang_version__;
@@ -74,6 +82,7 @@ nlohmann::ordered_json describe_machine() {
           {"logical_cores", std::thread::hardware_concurrency()},
           {"compiler", compiler()},
           {"build_type", MTCUT_BUILD_TYPE},
+          {"load_average", load_average()},
 #ifdef NDEBUG
           {"asserts", false}
 #else
@@ -133,7 +142,8 @@ std::string table1_markdown(const nlohmann::ordered_json& report) {
        << row["pieces"].get<std::size_t>() << " |\n";
   }
   md << "\nMachine: " << machine["cpu"].get<std::string>() << ", " << machine["logical_cores"].get<unsigned>()
-     << " logical cores (shared with other jobs); " << machine["compiler"].get<std::string>() << ", "
+     << " logical cores (shared with other jobs: load average " << machine["load_average"].get<double>()
+     << " when the run began); " << machine["compiler"].get<std::string>() << ", "
      << machine["build_type"].get<std::string>() << " build, asserts "
      << (machine["asserts"].get<bool>() ? "on" : "off") << ".\n";
   return md.str();

@@ -20,7 +20,7 @@ struct Table1BenchDef {
 nlohmann::ordered_json run_table1_bench(const Table1BenchDef& def);
 
 // Where a benchmark ran: cpu (model name from /proc/cpuinfo), logical_cores,
-// compiler, build_type, asserts.
+// compiler, build_type, load_average (1 minute, at the call), asserts.
 nlohmann::ordered_json describe_machine();
 
 // The markdown page of a run_table1_bench() report.

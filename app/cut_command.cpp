@@ -89,11 +89,12 @@ void register_cut_command(CLI::App& app) {
       "Cut a single-resolution tet mesh by one planar convex polygon; write it; print the split tets, the new tets, "
       "the cases, the pieces.\n"
       "  mtcut cut builtin:box --tets 2000 --polygon \"0,-1,-1;0,1,-1;0,1,1;0,-1,1\" --json\n"
-      "  mtcut cut ../shared/meshes/liver.msh --polygon \"...\" --scheme bielser17 -o cut.vtu");
+      "  mtcut cut ../shared/meshes/liver.msh --polygon \"-1.2,-1,-3;-1.2,7,-3;-1.2,7,4;-1.2,-1,4\" "
+      "--scheme bielser17 -o cut.vtu");
   cmd->add_option("input", options->input, "builtin:NAME, a surface to mesh, or a tet mesh file (as for `mtcut mesh`)")
       ->required();
   cmd->add_option("--polygon", options->polygon,
-                  "the cut: corners \"x,y,z;x,y,z;...\" (at least 3, in order, planar and convex), in metres")
+                  "the cut: corners \"x,y,z;x,y,z;...\" (at least 3, in order, planar and convex), in the mesh's units")
       ->required();
   cmd->add_option("--scheme", options->scheme, "split scheme: lut (the paper's) or bielser17 (the 1:17 reference)")
       ->capture_default_str();
