@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "app/run_hid.h"
 #include "app/scenario.h"
 
 namespace mtcut::app {
@@ -19,6 +20,7 @@ struct RunOptions {
   bool progress = true;     // a progress bar on stderr when it is a terminal
   std::string out_dir;      // "" : out/<scenario file name without extension>
   std::string record_path;  // write the scalpel samples here ("" = no)
+  RunHidDef hid;            // the HID drives the scalpel instead of the scenario's path
 };
 
 struct RunResult {
