@@ -67,6 +67,8 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
       throw engine::InputError(options.record_path + ": cannot record the trace there (no folder " + folder.string() +
                                ")");
   }
+  std::optional<RunHid> hid;
+  if (options.hid.enabled()) hid.emplace(options.hid, scenario.world.dt);
   const InterruptGuard interrupt;
   const auto setup_start = Clock::now();
   engine::Mt mt = build_organ_mt(scenario);
@@ -78,9 +80,7 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
   make_out_dir(dir);
 
   sim::World world(std::move(mt), scenario.world);
-  // Last: a live input's clock starts here, with the World's time at 0.
-  std::optional<RunHid> hid;
-  if (options.hid.enabled()) hid.emplace(options.hid, scenario.world.dt);
+  if (hid) hid->start();  // last: a live input's clock starts with the World's time at 0
   const int frames = options.frames_override > 0 ? options.frames_override : scenario.frames;
   record.frames_requested = frames;
   const int every = scenario.snapshot_every;

@@ -32,8 +32,12 @@ RunHid::RunHid(const RunHidDef& def, double dt) : def_(def), dt_(dt) {
   hid::InputDef input;
   input.record_path = def.record_path;
   input_ = std::make_unique<hid::InputThread>(*transport_, std::move(choice.profile), input);
+}
+
+void RunHid::start() {
+  if (!input_ || feed_) return;
   input_->start();
-  feed_ = std::make_unique<hid::HidFeed>(*input_, dt);
+  feed_ = std::make_unique<hid::HidFeed>(*input_, dt_);
 }
 
 RunHid::~RunHid() {

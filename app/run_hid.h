@@ -24,14 +24,16 @@ struct RunHidDef {
   std::string profile;
   std::string record_path;   // --record-hid: raw reports recorded here (live only)
   std::string replay_path;   // --hid-replay: a .hidrec to replay ("" = none)
-  bool enabled() const { return live || !replay_path.empty(); }
+  bool enabled() const { return live || !replay_path.empty() || !record_path.empty(); }
 };
 
 class RunHid {
  public:
-  // Checks the options and opens the input (live: starts the input thread,
-  // whose clock starts here with World time 0). Throws InputError.
+  // Checks the options, reads and decodes a replay, chooses the live
+  // device's profile. Throws InputError.
   RunHid(const RunHidDef& def, double dt);
+  // Live: starts the input thread, whose clock starts now, with World time 0.
+  void start();
   ~RunHid();
   RunHid(const RunHid&) = delete;
   RunHid& operator=(const RunHid&) = delete;
