@@ -28,14 +28,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// The organ's MT, built from the scenario's mesh.
-engine::Mt build_organ_mt(const ScenarioDef& scenario) {
-  const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
-  if (const auto report = loaded.mesh.validate(); !report.ok())
-    throw engine::InputError(scenario.mesh + ": invalid tet mesh: " + report.problems.front());
-  return engine::build_mt(loaded.mesh, scenario.world.mt);
-}
-
 void make_out_dir(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -51,6 +43,13 @@ std::set<fs::path> summary_paths(const fs::path& dir, const std::string& scenari
 }
 
 }  // namespace
+
+engine::Mt build_organ_mt(const ScenarioDef& scenario) {
+  const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
+  if (const auto report = loaded.mesh.validate(); !report.ok())
+    throw engine::InputError(scenario.mesh + ": invalid tet mesh: " + report.problems.front());
+  return engine::build_mt(loaded.mesh, scenario.world.mt);
+}
 
 std::string default_scenario_path() { return config_dir() + "/scenarios/default.toml"; }
 

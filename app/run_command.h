@@ -10,6 +10,7 @@
 
 #include "app/run_hid.h"
 #include "app/scenario.h"
+#include "engine/mt/mt.h"
 
 namespace mtcut::app {
 
@@ -30,6 +31,10 @@ struct RunResult {
 
 // Plays the scenario and writes its outputs. Throws InputError.
 RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options);
+
+// The organ's MT, built from the scenario's mesh (`mtcut run` and `mtcut
+// view`). Throws InputError for a bad or invalid mesh.
+engine::Mt build_organ_mt(const ScenarioDef& scenario);
 
 // The scenario `mtcut run` plays without one: <config dir>/scenarios/default.toml.
 std::string default_scenario_path();

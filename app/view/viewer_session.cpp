@@ -3,19 +3,10 @@
 #include <limits>
 
 #include "app/fragment_levels.h"
-#include "engine/input_error.h"
-#include "engine/mt/mt_builder.h"
+#include "app/run_command.h"
 
 namespace mtcut::app::view {
 namespace {
-
-// The organ's MT, built the way `mtcut run` builds it.
-engine::Mt build_organ(const ScenarioDef& scenario) {
-  const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
-  if (const auto report = loaded.mesh.validate(); !report.ok())
-    throw engine::InputError(scenario.mesh + ": invalid tet mesh: " + report.problems.front());
-  return engine::build_mt(loaded.mesh, scenario.world.mt);
-}
 
 bool apart(const sim::ScalpelPose& a, const sim::ScalpelPose& b) {
   return (a.base - b.base).norm() > 1e-9 || (a.tip - b.tip).norm() > 1e-9;
@@ -24,7 +15,7 @@ bool apart(const sim::ScalpelPose& a, const sim::ScalpelPose& b) {
 }  // namespace
 
 ViewerSession::ViewerSession(ScenarioDef scenario)
-    : scenario_(std::move(scenario)), loaded_mt_(build_organ(scenario_)) {
+    : scenario_(std::move(scenario)), loaded_mt_(build_organ_mt(scenario_)) {
   loaded_vertices_ = loaded_mt_.num_vertices();
   lo_ = glm::dvec3(std::numeric_limits<double>::max());
   hi_ = glm::dvec3(std::numeric_limits<double>::lowest());
