@@ -1,9 +1,11 @@
 #include "app/view/viewer_session.h"
 
+#include <iostream>
 #include <limits>
 
 #include "app/fragment_levels.h"
 #include "app/run_command.h"
+#include "sim/scalpel_trace.h"
 
 namespace mtcut::app::view {
 namespace {
@@ -31,6 +33,8 @@ void ViewerSession::reset(const sim::WorldDef& def) {
   mouse_.release();
   last_pose_ = parked_pose();
   engaged_sweeps_ = 0;
+  replaying_ = false;   // a reset ends a replay...
+  recorded_.clear();    // ...and starts a recording again from time 0
   topology_stale_ = true;
   levels_revision_ = UINT64_MAX;
   refresh_surface();
@@ -47,7 +51,15 @@ sim::ScalpelPose ViewerSession::parked_pose() const {
 }
 
 sim::ScalpelPose ViewerSession::next_pose() {
+  hid_time_ = -1;
   if (mouse_.active()) return mouse_.take_pose();
+  if (replaying_) return replay_.pose_at(world_->time());
+  if (hid_) {
+    // The device's path one step behind its clock: the samples around that
+    // time are in (hid_feed.h), and the window never waits for the device.
+    hid_time_ = std::max(hid_->clock() - world_->def().dt, 0.0);
+    return hid_->pose_at(hid_time_);
+  }
   if (settings_.play_script && !scenario_.scalpel.empty()) return scenario_.scalpel.pose_at(world_->time());
   return parked_pose();
 }
@@ -56,12 +68,42 @@ const sim::FrameMetrics& ViewerSession::step() {
   const sim::ScalpelPose pose = next_pose();
   if (pose.engaged && last_pose_.engaged && apart(pose, last_pose_)) ++engaged_sweeps_;
   last_pose_ = pose;
+  if (recording_) recorded_.push_back({world_->time(), pose});
   const sim::FrameMetrics& m = world_->step(pose);
+  if (hid_ && hid_time_ >= 0) hid_->reached(hid_time_, hid_->clock());
   timings_.cut.push(m.cut_ms);
   timings_.lod.push(m.lod_ms);
   timings_.physics.push(m.physics_ms);
   refresh_surface();
   return m;
+}
+
+void ViewerSession::poll_hid() {
+  if (!hid_) return;
+  for (const hid::InputEvent& e : hid_->take_events()) {
+    std::cerr << "mtcut: hid: " << e.message << "\n";
+    hid_message_ = e.message;
+  }
+}
+
+void ViewerSession::start_recording() {
+  replaying_ = false;
+  reset();
+  recorded_.clear();
+  recording_ = true;
+}
+
+std::size_t ViewerSession::stop_recording(const std::string& path) {
+  recording_ = false;
+  sim::write_scalpel_trace(path, recorded_);
+  return recorded_.size();
+}
+
+void ViewerSession::replay_trace(const std::string& path) {
+  replay_ = sim::read_scalpel_trace(path);
+  recording_ = false;
+  reset();
+  replaying_ = true;
 }
 
 void ViewerSession::refresh_surface() {
