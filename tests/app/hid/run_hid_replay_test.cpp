@@ -39,14 +39,7 @@ std::string pen_stroke_recording() {
   return text;
 }
 
-class RunHidReplay : public RunFixture {
- protected:
-  nlohmann::json run_json(const std::string& args) {
-    const CommandResult r = run_mtcut(args + " --json");
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    return r.exit_code == 0 ? nlohmann::json::parse(r.out) : nlohmann::json();
-  }
-};
+using RunHidReplay = RunFixture;
 
 TEST_F(RunHidReplay, ARecordingCutsTheOrganExactlyAsItsConvertedTrace) {
   const std::string rec = write("stroke.hidrec", pen_stroke_recording());
