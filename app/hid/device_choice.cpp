@@ -19,7 +19,8 @@ DeviceChoice choose_device(Transport& transport, const std::string& profile, con
     throw engine::InputError("--device " + device + ": no such HID device, or no profile fits it (see `mtcut hid list`; give --profile)");
   if (!profile.empty())
     throw engine::InputError("no connected HID device matches profile '" + profile + "' (see `mtcut hid list`)");
-  throw engine::InputError("no connected HID device has a profile (see `mtcut hid list`)");
+  throw engine::InputError(std::string("no connected HID device has a profile (see `mtcut hid list`") +
+                           (wait_for_device ? "; name one, --hid PROFILE, to wait for its device)" : ")"));
 }
 
 }  // namespace mtcut::app::hid
