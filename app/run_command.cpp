@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <set>
 
 #include "app/material_file.h"
@@ -27,14 +28,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// The organ's MT, built from the scenario's mesh.
-engine::Mt build_organ_mt(const ScenarioDef& scenario) {
-  const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
-  if (const auto report = loaded.mesh.validate(); !report.ok())
-    throw engine::InputError(scenario.mesh + ": invalid tet mesh: " + report.problems.front());
-  return engine::build_mt(loaded.mesh, scenario.world.mt);
-}
-
 void make_out_dir(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -51,6 +44,13 @@ std::set<fs::path> summary_paths(const fs::path& dir, const std::string& scenari
 
 }  // namespace
 
+engine::Mt build_organ_mt(const ScenarioDef& scenario) {
+  const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
+  if (const auto report = loaded.mesh.validate(); !report.ok())
+    throw engine::InputError(scenario.mesh + ": invalid tet mesh: " + report.problems.front());
+  return engine::build_mt(loaded.mesh, scenario.world.mt);
+}
+
 std::string default_scenario_path() { return config_dir() + "/scenarios/default.toml"; }
 
 std::string default_out_dir(const std::string& scenario_path) {
@@ -66,6 +66,8 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
       throw engine::InputError(options.record_path + ": cannot record the trace there (no folder " + folder.string() +
                                ")");
   }
+  std::optional<RunHid> hid;
+  if (options.hid.enabled()) hid.emplace(options.hid, scenario.world.dt);
   const InterruptGuard interrupt;
   const auto setup_start = Clock::now();
   engine::Mt mt = build_organ_mt(scenario);
@@ -77,6 +79,7 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
   make_out_dir(dir);
 
   sim::World world(std::move(mt), scenario.world);
+  if (hid) hid->start();  // last: a live input's clock starts with the World's time at 0
   const int frames = options.frames_override > 0 ? options.frames_override : scenario.frames;
   record.frames_requested = frames;
   const int every = scenario.snapshot_every;
@@ -91,9 +94,14 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
     ProgressBar progress(frames, options.progress);
     if (every > 0 && !interrupt.requested()) snapshots.write(world);
     for (int f = 0; f < frames && !interrupt.requested(); ++f) {
-      const sim::ScalpelPose pose = scenario.scalpel.pose_at(world.time());
-      if (!options.record_path.empty()) samples.push_back({world.time(), pose});
+      const double t = world.time();
+      const sim::ScalpelPose pose = hid ? hid->pose_at(t) : scenario.scalpel.pose_at(t);
+      if (!options.record_path.empty()) samples.push_back({t, pose});
       world.step(pose);
+      if (hid) {
+        hid->stepped(t, world.last_frame().total_ms * 1e-3);
+        hid->report_events(std::cerr);
+      }
       rows.push_back(record_frame(world, pieces));
       if (every > 0 && world.frame() % static_cast<std::uint64_t>(every) == 0) snapshots.write(world);
       progress.update(f + 1, rows.back().frame.total_ms);
@@ -120,6 +128,7 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
                                     {"pvd", every > 0 ? SnapshotSeries::kCollection : ""},
                                     {"surface", "surface.obj"}};
   if (!options.record_path.empty()) outputs["trace"] = options.record_path;
+  if (hid) result.summary["hid"] = hid->summary();
   result.summary["outputs"] = outputs;
   for (const fs::path& path : summary_paths(dir, scenario.summary_path))
     engine::write_stream_atomically(path.string(), [&](std::ostream& s) { s << result.summary.dump(2) << "\n"; });
@@ -134,6 +143,7 @@ void register_run_command(CLI::App& app) {
     bool json = false;
   };
   auto options = std::make_shared<Options>();
+  auto replay_profile = std::make_shared<std::string>();  // --profile, for --hid-replay
   CLI::App* cmd = app.add_subcommand(
       "run",
       "Play a scenario headless (TOML: organ, MT, material, LOD, cutter, integrator, scalpel keyframes or trace) and "
@@ -150,9 +160,27 @@ void register_run_command(CLI::App& app) {
                   "the output folder (made if missing); default: out/<scenario file name without .toml>");
   cmd->add_option("--record", options->run.record_path,
                   "write the scalpel samples of the run to this trace file (CSV, see README)");
+  cmd->add_option("--hid", options->run.hid.profile,
+                  "cut with a HID device (3D mouse, pen tablet, gamepad), live, for the scenario's frames in real "
+                  "time; PROFILE (config/hid or a .toml) defaults to the one that fits a connected device. Give "
+                  "SCENARIO before it")
+      ->expected(0, 1);
+  cmd->add_option("--record-hid", options->run.hid.record_path,
+                  "with --hid: record the device's raw reports to this file (.hidrec)");
+  cmd->add_option("--hid-replay", options->run.hid.replay_path,
+                  "replay a raw recording (.hidrec) through the HID decoder as the scalpel");
+  cmd->add_option("--profile", *replay_profile,
+                  "with --hid-replay: the profile to decode the recording with (default: the one it names)");
   cmd->add_option("--summary", options->summary, "also write the summary JSON to this file");
   cmd->add_flag("--json", options->json, "print the summary as JSON instead of a paragraph");
-  cmd->callback([options] {
+  cmd->callback([options, cmd, replay_profile] {
+    options->run.hid.live = cmd->count("--hid") > 0;
+    if (!replay_profile->empty()) {
+      if (options->run.hid.replay_path.empty())
+        throw engine::InputError("--profile " + *replay_profile + ": goes with --hid-replay (with --hid: --hid " +
+                                 *replay_profile + ")");
+      options->run.hid.profile = *replay_profile;
+    }
     const ScenarioDef scenario = load_scenario(options->scenario.empty() ? default_scenario_path() : options->scenario);
     const RunResult result = run_scenario(scenario, options->run);
     if (!options->summary.empty())

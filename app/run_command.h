@@ -8,7 +8,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "app/run_hid.h"
 #include "app/scenario.h"
+#include "engine/mt/mt.h"
 
 namespace mtcut::app {
 
@@ -19,6 +21,7 @@ struct RunOptions {
   bool progress = true;     // a progress bar on stderr when it is a terminal
   std::string out_dir;      // "" : out/<scenario file name without extension>
   std::string record_path;  // write the scalpel samples here ("" = no)
+  RunHidDef hid;            // the HID drives the scalpel instead of the scenario's path
 };
 
 struct RunResult {
@@ -28,6 +31,10 @@ struct RunResult {
 
 // Plays the scenario and writes its outputs. Throws InputError.
 RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options);
+
+// The organ's MT, built from the scenario's mesh (`mtcut run` and `mtcut
+// view`). Throws InputError for a bad or invalid mesh.
+engine::Mt build_organ_mt(const ScenarioDef& scenario);
 
 // The scenario `mtcut run` plays without one: <config dir>/scenarios/default.toml.
 std::string default_scenario_path();

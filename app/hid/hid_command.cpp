@@ -4,11 +4,14 @@
 #include <cstdio>
 #include <iostream>
 
+#include "app/hid/device_choice.h"
+#include "app/hid/hid_path.h"
 #include "app/hid/hidapi_transport.h"
 #include "app/hid/input_thread.h"
 #include "app/hid/profile_file.h"
 #include "app/hid/recording.h"
 #include "engine/input_error.h"
+#include "sim/scalpel_trace.h"
 
 namespace mtcut::app::hid {
 namespace {
@@ -44,22 +47,6 @@ void run_list() {
   std::cout << "\n";
 }
 
-// The profile and device to monitor, from the options and what is plugged in.
-std::pair<Profile, std::string> choose(HidapiTransport& transport, const MonitorOptions& options) {
-  const std::vector<Profile> profiles =
-      options.profile.empty() ? load_all_profiles() : std::vector<Profile>{load_profile(options.profile)};
-  for (const DeviceInfo& d : transport.enumerate()) {
-    if (!options.device.empty() && d.path != options.device) continue;
-    if (const Profile* p = find_profile(profiles, d)) return {*p, options.device};
-    if (!options.device.empty() && !options.profile.empty()) return {profiles.front(), options.device};
-  }
-  if (!options.device.empty())
-    throw engine::InputError("--device " + options.device + ": no such HID device, or no profile fits it (see `mtcut hid list`; give --profile)");
-  if (!options.profile.empty())
-    throw engine::InputError("no connected HID device matches profile '" + options.profile + "' (see `mtcut hid list`)");
-  throw engine::InputError("no connected HID device has a profile (see `mtcut hid list`)");
-}
-
 void print_sample(const Sample& s) {
   std::printf("%12.6f  tip %8.4f %8.4f %8.4f  base %8.4f %8.4f %8.4f  %s\n", s.time(), s.pose.tip.x(), s.pose.tip.y(),
               s.pose.tip.z(), s.pose.base.x(), s.pose.base.y(), s.pose.base.z(), s.pose.engaged ? "engaged" : "-");
@@ -67,7 +54,7 @@ void print_sample(const Sample& s) {
 
 void run_monitor(const MonitorOptions& options) {
   HidapiTransport transport;
-  auto [profile, device] = choose(transport, options);
+  auto [profile, device] = choose_device(transport, options.profile, options.device);
   InputDef def;
   def.device_path = device;
   def.record_path = options.record;
@@ -119,6 +106,18 @@ void run_replay(const std::string& recording, const std::string& profile_name) {
               c.accepted, c.rejected(), c.too_short, c.unknown_report, c.out_of_range);
 }
 
+// The recording decoded with `profile_name` as a scalpel trace: the path
+// `mtcut run --hid-replay` feeds the World (hid_path.h).
+void run_convert(const std::string& recording, const std::string& profile_name, const std::string& out) {
+  const Profile profile = load_profile(profile_name);
+  DecodeCounts c;
+  const std::vector<Sample> samples = replay_recording(recording, profile, &c);
+  const std::vector<sim::ScalpelKeyframe> keys = to_keyframes(profile, samples);
+  sim::write_scalpel_trace(out, keys);
+  std::printf("%s: %zu poses from %ld reports (%ld rejected) over %.3f s\n", out.c_str(), keys.size(), c.accepted,
+              c.rejected(), keys.back().time);
+}
+
 }  // namespace
 
 void register_hid_command(CLI::App& app) {
@@ -142,6 +141,17 @@ void register_hid_command(CLI::App& app) {
   replay_cmd->add_option("recording", replay->first, "a file written by --record-hid")->required();
   replay_cmd->add_option("--profile", replay->second, "the profile to decode it with")->required();
   replay_cmd->callback([replay] { run_replay(replay->first, replay->second); });
+
+  struct ConvertOptions {
+    std::string recording, profile, out;
+  };
+  auto convert = std::make_shared<ConvertOptions>();
+  CLI::App* convert_cmd = hid->add_subcommand(
+      "convert", "decode a raw recording (.hidrec) into a scalpel trace (CSV) that a scenario can replay");
+  convert_cmd->add_option("recording", convert->recording, "a file written by --record-hid")->required();
+  convert_cmd->add_option("--profile", convert->profile, "the profile to decode it with")->required();
+  convert_cmd->add_option("-o,--out", convert->out, "the trace file to write")->required();
+  convert_cmd->callback([convert] { run_convert(convert->recording, convert->profile, convert->out); });
 }
 
 }  // namespace mtcut::app::hid

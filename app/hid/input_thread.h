@@ -72,6 +72,8 @@ class InputThread {
 
   // Sample times count from here (steady clock at start()).
   std::chrono::steady_clock::time_point epoch() const { return epoch_; }
+  // The profile the reports are decoded with.
+  const Profile& profile() const { return decoder_.profile(); }
   // All samples up to `t` not taken yet, oldest first: the frame loop's call.
   std::vector<Sample> take_until(std::chrono::steady_clock::time_point t);
   std::vector<Sample> take_all() { return queue_.take_all(); }

@@ -104,6 +104,16 @@ std::vector<RawEvent> read_recording(const std::string& path) {
   return events;
 }
 
+std::string recorded_profile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw engine::InputError(path + ": cannot open the HID recording");
+  std::string line;
+  const std::string key = "# profile ";
+  while (std::getline(in, line))
+    if (line.rfind(key, 0) == 0) return line.substr(key.size());
+  return "";
+}
+
 std::vector<Sample> replay_recording(const std::string& path, const Profile& profile, DecodeCounts* counts) {
   return decode_events(profile, read_recording(path), counts);
 }

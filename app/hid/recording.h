@@ -43,6 +43,10 @@ std::string format_event(const RawEvent& event);
 // or times that go backwards.
 std::vector<RawEvent> read_recording(const std::string& path);
 
+// The profile named by the recording's "# profile NAME" comment (the input
+// thread writes it), or "" when it has none.
+std::string recorded_profile(const std::string& path);
+
 // The recording decoded with `profile`: the timestamped poses a live run gave.
 std::vector<Sample> replay_recording(const std::string& path, const Profile& profile, DecodeCounts* counts = nullptr);
 

@@ -5,10 +5,14 @@
 #include <memory>
 #include <numeric>
 
+#include "app/hid/device_choice.h"
+#include "app/hid/hid_feed.h"
+#include "app/hid/hidapi_transport.h"
 #include "app/material_file.h"
 #include "app/scenario.h"
 #include "app/view/viewer_session.h"
 #include "app/view/viewer_window.h"
+#include "engine/input_error.h"
 
 namespace mtcut::app {
 namespace {
@@ -21,6 +25,9 @@ struct ViewOptions {
   bool hide_panel = false;
   bool lod_colors = false;
   bool wireframe = false;
+  bool hid = false;         // --hid given
+  std::string hid_profile;  // its PROFILE ("" = the one that fits a connected device)
+  std::string record_hid;   // --record-hid FILE
 };
 
 double mean(const std::vector<double>& values) {
@@ -32,6 +39,7 @@ double mean(const std::vector<double>& values) {
 void play_frames(view::ViewerSession& session, view::ViewerWindow& window, int frames) {
   std::vector<double> cut, lod, physics, render;
   for (int f = 0; f < frames; ++f) {
+    session.poll_hid();
     const sim::FrameMetrics& m = session.step();
     cut.push_back(m.cut_ms);
     lod.push_back(m.lod_ms);
@@ -54,16 +62,36 @@ void run_view(const ViewOptions& options) {
   view::ViewerSession session(std::move(scenario));
   if (options.lod_colors) session.settings().color_mode = view::ColorMode::kLodLevels;
   session.settings().wireframe = options.wireframe;
+  // The device, when asked for: its thread's clock starts with the window.
+  std::unique_ptr<hid::HidapiTransport> transport;
+  std::unique_ptr<hid::InputThread> input;
+  std::unique_ptr<hid::HidFeed> feed;
+  if (options.hid) {
+    transport = std::make_unique<hid::HidapiTransport>();
+    hid::DeviceChoice choice = hid::choose_device(*transport, options.hid_profile, "", /*wait_for_device=*/true);
+    hid::InputDef def;
+    def.record_path = options.record_hid;
+    input = std::make_unique<hid::InputThread>(*transport, std::move(choice.profile), def);
+  } else if (!options.record_hid.empty()) {
+    throw engine::InputError("--record-hid " + options.record_hid + ": records the device of a --hid session; add --hid");
+  }
   view::ViewerWindow window(session, {options.width, options.height, !options.hide_panel});
+  if (input) {
+    input->start();
+    feed = std::make_unique<hid::HidFeed>(*input, 0.0);
+    session.attach_hid(feed.get());
+  }
   play_frames(session, window, options.frames);
   if (!options.screenshot.empty()) {
     view::Image image;
     window.draw_frame(&image);
     view::write_png(options.screenshot, image);
     std::cerr << "mtcut view: wrote " << options.screenshot << "\n";
-    return;
+  } else {
+    window.run();
   }
-  window.run();
+  session.attach_hid(nullptr);
+  if (input) input->stop();
 }
 
 }  // namespace
@@ -86,7 +114,15 @@ void register_view_command(CLI::App& app) {
   cmd->add_flag("--hide-panel", options->hide_panel, "draw the scene without the panel");
   cmd->add_flag("--lod-colors", options->lod_colors, "colour faces by LOD level (blue finest, red coarsest)");
   cmd->add_flag("--wireframe", options->wireframe, "draw the mesh's edges over the surface");
-  cmd->callback([options] { run_view(*options); });
+  cmd->add_option("--hid", options->hid_profile,
+                  "cut with a HID device (3D mouse, pen tablet, gamepad); PROFILE (config/hid or a .toml) defaults "
+                  "to the one that fits a connected device. Give SCENARIO before it")
+      ->expected(0, 1);
+  cmd->add_option("--record-hid", options->record_hid, "with --hid: record the device's raw reports (.hidrec)");
+  cmd->callback([options, cmd] {
+    options->hid = cmd->count("--hid") > 0;
+    run_view(*options);
+  });
 }
 
 }  // namespace mtcut::app

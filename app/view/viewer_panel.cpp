@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include "app/view/viewer_input.h"
+#include "engine/input_error.h"
 
 namespace mtcut::app::view {
 namespace {
@@ -24,8 +25,9 @@ PanelRequests ViewerPanel::draw(ViewerSession& session, const PanelStatus& statu
   requests.clear_clock = draw_controls(session);
   if (ImGui::CollapsingHeader("World settings")) requests.clear_clock |= draw_world_settings(session);
   if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) draw_display(session);
-  // TODO(issue 9): record the user's strokes to a scalpel trace and replay it
-  // once sim/scalpel_trace.h (`mtcut run --record`) is on main.
+  if (ImGui::CollapsingHeader("Record and replay", ImGuiTreeNodeFlags_DefaultOpen))
+    requests.clear_clock |= draw_trace(session);
+  if (session.hid() && ImGui::CollapsingHeader("HID device", ImGuiTreeNodeFlags_DefaultOpen)) draw_hid(session);
   requests.screenshot = ImGui::Button("Screenshot");
   if (ImGui::CollapsingHeader("Help")) ImGui::TextUnformatted(kInputHelp);
   ImGui::End();
@@ -120,6 +122,51 @@ bool ViewerPanel::draw_world_settings(ViewerSession& session) {
   ImGui::SameLine();
   if (ImGui::Button("Revert")) edited_ = session.world().def();
   return false;
+}
+
+bool ViewerPanel::draw_trace(ViewerSession& session) {
+  ImGui::InputText("trace file", trace_path_.data(), trace_path_.size());
+  const std::string path = trace_path_.data();
+  bool restarted = false;
+  try {
+    if (!session.recording()) {
+      if (ImGui::Button("Record from reset")) {
+        session.start_recording();
+        trace_message_ = "recording (the World started again)";
+        restarted = true;
+      }
+    } else if (ImGui::Button("Stop and save")) {
+      const std::size_t n = session.stop_recording(path);
+      trace_message_ = "wrote " + std::to_string(n) + " poses to " + path;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Replay")) {
+      session.replay_trace(path);
+      trace_message_ = "replaying " + path;
+      restarted = true;
+    }
+  } catch (const engine::InputError& e) {
+    trace_message_ = e.what();
+  }
+  if (session.recording()) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.3f, 1.0f), "REC");
+  }
+  if (!trace_message_.empty()) ImGui::TextWrapped("%s", trace_message_.c_str());
+  return restarted;
+}
+
+void ViewerPanel::draw_hid(const ViewerSession& session) {
+  const hid::InputStatus status = session.hid()->status();
+  if (status.connected)
+    ImGui::TextColored(ImVec4(0.4f, 1.0f, 0.4f, 1.0f), "connected: %s", status.device_path.c_str());
+  else
+    ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.3f, 1.0f), "%s", status.unplugs > 0 ? "lost: reconnecting" : "looking for the device");
+  const hid::LatencySummary latency = session.hid()->latency();
+  ImGui::Text("samples %ld (rejected %ld), unplugs %ld", status.samples, status.counts.rejected(), status.unplugs);
+  ImGui::Text("sample-to-cut latency: median %.1f ms, last %.1f ms, max %.1f ms", latency.median_ms, latency.last_ms,
+              latency.max_ms);
+  if (!session.hid_message().empty()) ImGui::TextWrapped("%s", session.hid_message().c_str());
 }
 
 void ViewerPanel::draw_display(ViewerSession& session) {

@@ -1,11 +1,15 @@
 #pragma once
 // The Dear ImGui panel: frame-time breakdown with live plots, model figures,
-// simulation controls (pause, step, reset, scripted path), the World's
-// settings (LOD, material, cutter budget, integrator: edited, then applied
-// by resetting the World with them), display options and a screenshot
-// button. Needs an ImGui frame in progress.
+// simulation controls (pause, step, reset, scripted path), recording what
+// the user does to a scalpel trace and replaying one, the HID device's
+// status (connected or lost, sample-to-cut latency), the World's settings
+// (LOD, material, cutter budget, integrator: edited, then applied by
+// resetting the World with them), display options and a screenshot button.
+// Needs an ImGui frame in progress.
 
+#include <array>
 #include <cstdint>
+#include <string>
 
 #include "app/view/viewer_session.h"
 #include "sim/world_def.h"
@@ -37,8 +41,12 @@ class ViewerPanel {
   bool draw_controls(ViewerSession& session);
   bool draw_world_settings(ViewerSession& session);
   void draw_display(ViewerSession& session);
+  bool draw_trace(ViewerSession& session);
+  void draw_hid(const ViewerSession& session);
 
   sim::WorldDef edited_;  // the World's settings as edited, applied by "Apply and reset"
+  std::array<char, 512> trace_path_{"mtcut-trace.csv"};  // the trace file to record to or replay
+  std::string trace_message_;                           // what the last record or replay did
 };
 
 }  // namespace mtcut::app::view

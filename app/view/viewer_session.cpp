@@ -1,21 +1,14 @@
 #include "app/view/viewer_session.h"
 
+#include <iostream>
 #include <limits>
 
 #include "app/fragment_levels.h"
-#include "engine/input_error.h"
-#include "engine/mt/mt_builder.h"
+#include "app/run_command.h"
+#include "sim/scalpel_trace.h"
 
 namespace mtcut::app::view {
 namespace {
-
-// The organ's MT, built the way `mtcut run` builds it.
-engine::Mt build_organ(const ScenarioDef& scenario) {
-  const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
-  if (const auto report = loaded.mesh.validate(); !report.ok())
-    throw engine::InputError(scenario.mesh + ": invalid tet mesh: " + report.problems.front());
-  return engine::build_mt(loaded.mesh, scenario.world.mt);
-}
 
 bool apart(const sim::ScalpelPose& a, const sim::ScalpelPose& b) {
   return (a.base - b.base).norm() > 1e-9 || (a.tip - b.tip).norm() > 1e-9;
@@ -24,7 +17,7 @@ bool apart(const sim::ScalpelPose& a, const sim::ScalpelPose& b) {
 }  // namespace
 
 ViewerSession::ViewerSession(ScenarioDef scenario)
-    : scenario_(std::move(scenario)), loaded_mt_(build_organ(scenario_)) {
+    : scenario_(std::move(scenario)), loaded_mt_(build_organ_mt(scenario_)) {
   loaded_vertices_ = loaded_mt_.num_vertices();
   lo_ = glm::dvec3(std::numeric_limits<double>::max());
   hi_ = glm::dvec3(std::numeric_limits<double>::lowest());
@@ -40,6 +33,8 @@ void ViewerSession::reset(const sim::WorldDef& def) {
   mouse_.release();
   last_pose_ = parked_pose();
   engaged_sweeps_ = 0;
+  replaying_ = false;   // a reset ends a replay...
+  recorded_.clear();    // ...and starts a recording again from time 0
   topology_stale_ = true;
   levels_revision_ = UINT64_MAX;
   refresh_surface();
@@ -56,7 +51,15 @@ sim::ScalpelPose ViewerSession::parked_pose() const {
 }
 
 sim::ScalpelPose ViewerSession::next_pose() {
+  hid_time_ = -1;
   if (mouse_.active()) return mouse_.take_pose();
+  if (replaying_) return replay_.pose_at(world_->time());
+  if (hid_) {
+    // The device's path one step behind its clock: the samples around that
+    // time are in (hid_feed.h), and the window never waits for the device.
+    hid_time_ = std::max(hid_->clock() - world_->def().dt, 0.0);
+    return hid_->pose_at(hid_time_);
+  }
   if (settings_.play_script && !scenario_.scalpel.empty()) return scenario_.scalpel.pose_at(world_->time());
   return parked_pose();
 }
@@ -65,12 +68,42 @@ const sim::FrameMetrics& ViewerSession::step() {
   const sim::ScalpelPose pose = next_pose();
   if (pose.engaged && last_pose_.engaged && apart(pose, last_pose_)) ++engaged_sweeps_;
   last_pose_ = pose;
+  if (recording_) recorded_.push_back({world_->time(), pose});
   const sim::FrameMetrics& m = world_->step(pose);
+  if (hid_ && hid_time_ >= 0) hid_->reached(hid_time_, hid_->clock());
   timings_.cut.push(m.cut_ms);
   timings_.lod.push(m.lod_ms);
   timings_.physics.push(m.physics_ms);
   refresh_surface();
   return m;
+}
+
+void ViewerSession::poll_hid() {
+  if (!hid_) return;
+  for (const hid::InputEvent& e : hid_->take_events()) {
+    std::cerr << "mtcut: hid: " << e.message << "\n";
+    hid_message_ = e.message;
+  }
+}
+
+void ViewerSession::start_recording() {
+  replaying_ = false;
+  reset();
+  recorded_.clear();
+  recording_ = true;
+}
+
+std::size_t ViewerSession::stop_recording(const std::string& path) {
+  recording_ = false;
+  sim::write_scalpel_trace(path, recorded_);
+  return recorded_.size();
+}
+
+void ViewerSession::replay_trace(const std::string& path) {
+  replay_ = sim::read_scalpel_trace(path);
+  recording_ = false;
+  reset();
+  replaying_ = true;
 }
 
 void ViewerSession::refresh_surface() {

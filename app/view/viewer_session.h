@@ -7,9 +7,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
+#include "app/hid/hid_feed.h"
 #include "app/scenario.h"
 #include "app/view/frame_history.h"
 #include "app/view/mouse_scalpel.h"
@@ -42,9 +45,32 @@ class ViewerSession {
 
   // Runs one frame of physics with next_pose(), then refreshes the surface.
   const sim::FrameMetrics& step();
-  // The pose the next step uses: a mouse stroke first, else the scenario's
-  // path (when settings.play_script), else the blade parked above the organ.
+  // The pose the next step uses: a mouse stroke first, then a trace being
+  // replayed, then the HID device (when attached), then the scenario's path
+  // (when settings.play_script), else the blade parked above the organ.
   sim::ScalpelPose next_pose();
+
+  // The HID device drives the blade (`mtcut view --hid`); null detaches.
+  // `feed` is live, outlives the session or is detached first.
+  void attach_hid(hid::HidFeed* feed) { hid_ = feed; }
+  const hid::HidFeed* hid() const { return hid_; }
+  // Takes the device's events (each once), prints them to stderr and keeps
+  // the last one for the panel. Call every displayed frame.
+  void poll_hid();
+  const std::string& hid_message() const { return hid_message_; }
+
+  // Recording what the user does (mouse, device, script) as a scalpel trace:
+  // the World starts again at time 0 and every step's pose is kept.
+  void start_recording();
+  bool recording() const { return recording_; }
+  // Writes the poses kept since start_recording() to `path` (the trace
+  // format of sim/scalpel_trace.h, which `mtcut run` replays too); returns
+  // how many. Throws InputError when the file cannot be written.
+  std::size_t stop_recording(const std::string& path);
+  // Replays a trace: the World starts again at time 0 with the trace as the
+  // scalpel's path. Throws InputError "file:line: what" for a bad trace.
+  void replay_trace(const std::string& path);
+  bool replaying() const { return replaying_; }
   // Rebuilds the World from the MT as loaded with `def` (panel edits of
   // LOD, material, cutter budget, integrator) and starts again at time 0.
   void reset(const sim::WorldDef& def);
@@ -104,6 +130,15 @@ class ViewerSession {
 
   sim::ScalpelPose last_pose_;
   std::uint64_t engaged_sweeps_ = 0;
+
+  hid::HidFeed* hid_ = nullptr;  // not owned
+  double hid_time_ = -1;         // the device-clock time of the last pose taken from it (-1: none)
+  std::string hid_message_;
+
+  bool recording_ = false;
+  std::vector<sim::ScalpelKeyframe> recorded_;  // (steps since start_recording) World time, pose
+  bool replaying_ = false;
+  sim::ScalpelPath replay_;
 };
 
 }  // namespace mtcut::app::view

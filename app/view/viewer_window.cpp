@@ -170,6 +170,7 @@ void ViewerWindow::run() {
   constexpr double kPhysicsBudget = 1.0 / 20.0;
   while (!glfwWindowShouldClose(window_)) {
     glfwPollEvents();
+    session_.poll_hid();
     const auto now = Clock::now();
     const double elapsed = std::chrono::duration<double>(now - last).count();
     last = now;

@@ -10,6 +10,8 @@
 #include <iterator>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/app/run_mtcut.h"
 #include "tests/test_paths.h"
 
@@ -32,6 +34,12 @@ class RunFixture : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
+  // Runs `mtcut ARGS --json` and returns the summary, failing the test on a non-zero exit.
+  nlohmann::json run_json(const std::string& args) {
+    const CommandResult r = run_mtcut(args + " --json");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return r.exit_code == 0 ? nlohmann::json::parse(r.out) : nlohmann::json();
+  }
   // A path in the test's folder.
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::string write(const std::string& name, const std::string& text) const {

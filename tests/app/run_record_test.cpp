@@ -11,12 +11,6 @@ namespace {
 
 class RunRecord : public RunFixture {
  protected:
-  // Runs and returns the summary, failing the test on a non-zero exit.
-  nlohmann::json run_json(const std::string& args) {
-    const CommandResult r = run_mtcut(args + " --json");
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    return r.exit_code == 0 ? nlohmann::json::parse(r.out) : nlohmann::json();
-  }
   void expect_one_line_error(const CommandResult& r, const std::string& what) {
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_NE(r.err.find(what), std::string::npos) << r.err;

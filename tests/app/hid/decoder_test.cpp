@@ -96,17 +96,17 @@ TEST(HidDecoder, PenTabletIsAbsoluteWithPressureDepthTipSwitchAndTilt) {
   // Top-left corner of the tablet (towards +y in the world), full pressure, pen upright.
   auto s = decoder.feed(report(0, pen_report(true, 32767, 0, 8191, 0, 0)));
   ASSERT_TRUE(s);
-  expect_pose(s->pose, Vec3(0.1, 0.1, 0.04 - 0.09), Vec3(0.1, 0.1, 0.04 - 0.09 + 0.1), true);
+  expect_pose(s->pose, Vec3(0.1, 0.1, 0.04 - 0.11), Vec3(0.1, 0.1, 0.04 - 0.11 + 0.13), true);
   // Pen lifted: tip switch off, no pressure; smoothing 0.2 keeps a fifth of the old value.
   s = decoder.feed(report(5000, pen_report(false, 32767, 0, 0, 0, 0)));
-  expect_pose(s->pose, Vec3(0.1, 0.1, 0.04 - 0.2 * 0.09), Vec3(0.1, 0.1, 0.04 - 0.2 * 0.09 + 0.1), false);
+  expect_pose(s->pose, Vec3(0.1, 0.1, 0.04 - 0.2 * 0.11), Vec3(0.1, 0.1, 0.04 - 0.2 * 0.11 + 0.13), false);
   // Tilted 60 degrees towards +x: the base leans to +x.
   Decoder tilted(load_profile("pen_tablet"));
   s = tilted.feed(report(0, pen_report(true, 16384, 16384, 0, 127, 0)));
   const double c = 1.0 / 32767;  // 16384 is half a step right of the centre
   const Vec3 tip(0.1 * c, -0.1 * c, 0.04);
   const Vec3 axis = Vec3(std::tan(1.0472), 0, 1).normalized();
-  expect_pose(s->pose, tip, tip + 0.1 * axis, true);
+  expect_pose(s->pose, tip, tip + 0.13 * axis, true);
   EXPECT_GT(s->pose.base.x(), s->pose.tip.x());
   // Malformed: wrong id, short, pressure beyond 8191.
   EXPECT_FALSE(decoder.feed(report(6000, spacemouse_report(1, 0, 0, 0))));
