@@ -47,13 +47,21 @@ void TetBvh::rebuild(const Mt& mt) {
   extra_head_.assign(bvh_.nodes().size(), -1);
   extra_tet_.clear();
   extra_next_.clear();
+  extra_leaf_.clear();
+  slot_leaf_.assign(items.size(), -1);
+  const auto nodes = bvh_.nodes();
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    if (nodes[n].leaf())
+      for (std::int32_t i = nodes[n].first; i < nodes[n].first + nodes[n].count; ++i)
+        slot_leaf_[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(n);
   indexed_ = ids.size();
   edits_ = 0;
 }
 
 std::size_t TetBvh::bytes() const {
   return bvh_.bytes() + (slot_tet_.capacity() + extra_head_.capacity() + extra_tet_.capacity() +
-                         extra_next_.capacity() + where_.capacity()) * sizeof(std::int32_t);
+                         extra_next_.capacity() + where_.capacity() + slot_leaf_.capacity() + extra_leaf_.capacity()) *
+                            sizeof(std::int32_t);
 }
 
 TetId TetBvh::locate(const Mt& mt, const Vec3& p) const {
@@ -114,9 +122,21 @@ void TetBvh::insert(const Mt& mt, TetId t) {
     const double cost_right = grown_right.volume() - nodes[left + 1].box.volume();
     n = cost_left <= cost_right ? left : left + 1;
   }
+  append_to_leaf(n, t);
+}
+
+std::int32_t TetBvh::leaf_of(TetId t) const {
+  if (t.index() >= where_.size()) return -1;
+  const std::int32_t w = where_[t.index()];
+  if (w == -1) return -1;
+  return w >= 0 ? slot_leaf_[static_cast<std::size_t>(w)] : extra_leaf_[static_cast<std::size_t>(-w - 2)];
+}
+
+void TetBvh::append_to_leaf(std::size_t n, TetId t) {
   const auto e = static_cast<std::int32_t>(extra_tet_.size());
   extra_tet_.push_back(t.value);
   extra_next_.push_back(extra_head_[n]);
+  extra_leaf_.push_back(static_cast<std::int32_t>(n));
   extra_head_[n] = e;
   where_[t.index()] = -e - 2;
   ++indexed_;
@@ -124,8 +144,26 @@ void TetBvh::insert(const Mt& mt, TetId t) {
 }
 
 void TetBvh::replace(const Mt& mt, TetId old, std::span<const TetId> pieces) {
+  // The pieces of a split lie in the old tet, so in the box of its leaf:
+  // they join that leaf directly, with no walk from the root and no box
+  // grown (a piece that pokes out, which the split never makes, walks).
+  const std::int32_t leaf = leaf_of(old);
   remove(old);
-  for (TetId t : pieces) insert(mt, t);
+  if (leaf < 0) {
+    for (TetId t : pieces) insert(mt, t);
+    return;
+  }
+  const Aabb& leaf_box = bvh_.nodes()[static_cast<std::size_t>(leaf)].box;
+  if (where_.size() < mt.num_tets()) where_.resize(mt.num_tets(), -1);
+  for (TetId t : pieces) {
+    if (where_[t.index()] != -1) continue;
+    const Aabb box = tet_box(mt, t);
+    if (leaf_box.contains(box.lo) && leaf_box.contains(box.hi)) {
+      append_to_leaf(static_cast<std::size_t>(leaf), t);
+    } else {
+      insert(mt, t);
+    }
+  }
 }
 
 bool TetBvh::refresh(const Mt& mt) {

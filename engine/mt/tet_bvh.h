@@ -84,6 +84,11 @@ class TetBvh {
   bool refresh(const Mt& mt);
 
  private:
+  // The leaf indexing t (-1 when t is not indexed).
+  std::int32_t leaf_of(TetId t) const;
+  // Appends t to leaf n's list (n's box and its ancestors' must hold t's box).
+  void append_to_leaf(std::size_t n, TetId t);
+
   template <class Visit>
   bool visit_leaf(std::int32_t n, Visit&& visit) const {
     const BvhNode& node = bvh_.nodes()[static_cast<std::size_t>(n)];
@@ -103,6 +108,8 @@ class TetBvh {
   std::vector<std::int32_t> extra_head_;  // (n_nodes) first inserted tet of a leaf, -1 = none
   std::vector<std::int32_t> extra_tet_;   // (n_extra) inserted tets, -1 = removed
   std::vector<std::int32_t> extra_next_;  // (n_extra) next in the leaf's list
+  std::vector<std::int32_t> slot_leaf_;   // (n_slots) leaf node holding each slot
+  std::vector<std::int32_t> extra_leaf_;  // (n_extra) leaf node of each inserted tet
   std::vector<std::int32_t> where_;       // (n_tets) slot >= 0, extra e as -(e + 2), -1 = not indexed
   std::size_t indexed_ = 0;
   std::size_t edits_ = 0;  // removals and insertions since the last rebuild
