@@ -127,16 +127,23 @@ std::optional<KeyedSplit> split_tet_keyed(const Tet& tet, const CutClassifier& c
   const SplitRecipe& recipe = table.recipe(config);
   KeyedSplit out;
   out.kind = recipe.kind;
-  std::bitset<kLabelCount> seen;
+  out.tets.reserve(recipe.tets.size());
+  // Each new point's key once (a label is a corner of several recipe tets):
+  // slot[l] is 1 + its index in out.points, 0 before it is met.
+  std::array<std::uint8_t, kLabelCount> slot{};
   for (const auto& t : recipe.tets) {
     std::array<PointKey, 4> keyed;
     for (int j = 0; j < 4; ++j) {
-      keyed[j] = point_key(tet, t[j]);
-      if (!seen[t[j]] && keyed[j].kind != PointKind::kOriginal) {
-        out.points.push_back(keyed[j]);
-        out.sources.push_back(point_source(tet, t[j], classifier, recipe));
+      const Label l = t[j];
+      if (slot[l] != 0) {
+        keyed[j] = out.points[slot[l] - 1u];
+        continue;
       }
-      seen[t[j]] = true;
+      keyed[j] = point_key(tet, l);
+      if (keyed[j].kind == PointKind::kOriginal) continue;  // cheap to key again
+      out.points.push_back(keyed[j]);
+      out.sources.push_back(point_source(tet, l, classifier, recipe));
+      slot[l] = static_cast<std::uint8_t>(out.points.size());
     }
     out.tets.push_back(keyed);
   }

@@ -121,6 +121,12 @@ class MtCut {
   double find_seconds_ = 0;
   DecompositionScratch scratch_;
   std::vector<TetId> pieces_;  // scratch
+  // Scratch of change_tet, kept so that a split allocates nothing: the
+  // pieces' vertices, the faces of the old tet each corner lies on, and the
+  // pieces' sorted faces.
+  std::vector<Tet> made_;
+  std::vector<std::array<std::uint8_t, 4>> on_face_;
+  std::vector<std::array<VertId, 3>> faces_;
 };
 
 // Order in which cut_mt processes the jobs (tests check they agree).
