@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iostream>
 #include <span>
 #include <stdexcept>
 
@@ -254,7 +253,6 @@ TEST(World, AStrokeThatTurnsWithinOneFrameIsCutAlongBothLegsNotItsChord) {
   ASSERT_FALSE(chord.empty()) << "the chord itself cuts";
   EXPECT_EQ(near_legs(chord), std::make_pair(0, 0));
   const auto [first, second] = near_legs(polyline);
-  std::cerr << "DBG chord " << chord.size() << " poly " << polyline.size() << " legs " << first << " " << second << "\n";
   EXPECT_GT(first, 0) << "the first leg was not cut";
   EXPECT_GT(second, 0) << "the second leg was not cut";
 }

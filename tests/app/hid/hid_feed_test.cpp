@@ -58,7 +58,7 @@ TEST(HidFeed, EachFrameGetsEverySampleSinceTheLastFrameThenItsPose) {
   samples.push_back({80000, blade_at(-0.03, 0.0)});
   const sim::ScalpelPath whole(to_keyframes(profile, samples));
   HidFeed feed(profile, samples);
-  const std::vector<double> frames = {0.0, 0.02, 0.04, 0.06, 0.08, 0.1};
+  const std::vector<double> frames = {0.0, 0.02, 0.04, 0.06, samples.back().time(), 0.1};
   std::vector<std::vector<sim::ScalpelKeyframe>> got;
   for (const double t : frames) got.push_back(feed.frame_samples(t));
 
@@ -75,8 +75,9 @@ TEST(HidFeed, EachFrameGetsEverySampleSinceTheLastFrameThenItsPose) {
     for (std::size_t i = 0; i < want.size(); ++i) EXPECT_TRUE(same_pose(got[f][i].pose, want[i])) << f << ", " << i;
     EXPECT_EQ(got[f].back().time, frames[f]);
   }
-  EXPECT_EQ(got[1].size(), 5u);  // four samples, then the pose at 20 ms
-  EXPECT_EQ(got[4].size(), 4u);  // 63, 68, 73 and 80 ms: the last one is the frame's pose
+  EXPECT_EQ(got[1].size(), 5u);  // four samples (3 to 18 ms), then the pose at 20 ms
+  EXPECT_EQ(got[3].size(), 5u);  // the turn: 43 to 58 ms, then the pose at 60 ms
+  EXPECT_EQ(got[4].size(), 1u);  // the sample at the frame's time is its pose
   EXPECT_EQ(got[5].size(), 1u);  // no sample: the last one's pose holds
 }
 
@@ -159,7 +160,9 @@ TEST(HidFeed, AnUnplugMidStrokeIsToldOnceDisengagesAndTheWorldRunsOn) {
   std::filesystem::remove(recording);
   std::size_t found = 0;
   for (std::size_t i = 0; i < handed.size(); ++i) {
-    if (i > 0) EXPECT_GT(handed[i].time, handed[i - 1].time);
+    if (i > 0) {
+      EXPECT_GT(handed[i].time, handed[i - 1].time);
+    }
     if (found < keys.size() && handed[i].time == keys[found].time) {
       EXPECT_TRUE(same_pose(handed[i].pose, keys[found].pose)) << "sample at " << keys[found].time;
       ++found;

@@ -105,8 +105,12 @@ TEST(HidPath, LiveFrameSamplesAreTheWholePathsBitForBit) {
   }
   // Every keyframe up to the last frame reached a frame, once, in order.
   std::size_t found = 0;
-  for (const auto& h : handed)
-    if (found < keys.size() && h.time == keys[found].time) EXPECT_TRUE(same(h.pose, keys[found++].pose));
+  for (const auto& h : handed) {
+    if (found < keys.size() && h.time == keys[found].time) {
+      EXPECT_TRUE(same(h.pose, keys[found].pose)) << "t = " << h.time;
+      ++found;
+    }
+  }
   EXPECT_GT(found, 100u);
   EXPECT_TRUE(found == keys.size() || keys[found].time > times.back());
   EXPECT_LT(live.keyframes().size(), 10u);  // old keyframes forgotten
