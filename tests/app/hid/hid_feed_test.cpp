@@ -5,6 +5,8 @@
 // reconnection is retried until it succeeds, and the World runs on: no
 // reset, no frame lost, the cut kept, the stroke resumed. Waits are the
 // feed's own real-time pacing; nothing is timed.
+// Also, replayed: each frame gets every sample since the last frame, then
+// the pose at its time.
 
 #include "app/hid/hid_feed.h"
 
