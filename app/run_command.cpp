@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <set>
 
@@ -89,15 +90,26 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
   PieceCounter pieces;
   rows.reserve(static_cast<std::size_t>(frames));
 
+  // The scalpel's samples for the frame at t, the last one at t: every sample
+  // since the last frame of the HID or of a replayed trace (a fast stroke is a
+  // polyline of poses), the one pose at t of keyframes (interpolated per frame).
+  double previous_t = -std::numeric_limits<double>::infinity();
+  const auto frame_samples = [&](double t) -> std::vector<sim::ScalpelSample> {
+    if (hid) return hid->frame_samples(t);
+    if (!scenario.scalpel_trace.empty()) return scenario.scalpel.samples_between(previous_t, t);
+    return {{t, scenario.scalpel.pose_at(t)}};
+  };
+
   const auto run_start = Clock::now();
   {
     ProgressBar progress(frames, options.progress);
     if (every > 0 && !interrupt.requested()) snapshots.write(world);
     for (int f = 0; f < frames && !interrupt.requested(); ++f) {
       const double t = world.time();
-      const sim::ScalpelPose pose = hid ? hid->pose_at(t) : scenario.scalpel.pose_at(t);
-      if (!options.record_path.empty()) samples.push_back({t, pose});
-      world.step(pose);
+      const std::vector<sim::ScalpelSample> frame = frame_samples(t);
+      previous_t = t;
+      if (!options.record_path.empty()) samples.insert(samples.end(), frame.begin(), frame.end());
+      world.step(sim::poses_of(frame));
       if (hid) {
         hid->stepped(t, world.last_frame().total_ms * 1e-3);
         hid->report_events(std::cerr);

@@ -20,7 +20,7 @@ struct RunOptions {
   int frames_override = 0;  // 0: the scenario's
   bool progress = true;     // a progress bar on stderr when it is a terminal
   std::string out_dir;      // "" : out/<scenario file name without extension>
-  std::string record_path;  // write the scalpel samples here ("" = no)
+  std::string record_path;  // write every scalpel sample the World got here, at its time ("" = no)
   RunHidDef hid;            // the HID drives the scalpel instead of the scenario's path
 };
 

@@ -2,14 +2,16 @@
 // The HID scalpel of `mtcut run`: `--hid [PROFILE]` drives the blade live
 // from the device through the input thread (optionally recording the raw
 // reports, `--record-hid FILE`), `--hid-replay FILE --profile P` replays a
-// recording through the same decoder. Either way the World gets the pose of
-// the samples' path at each frame's time (app/hid/hid_feed.h).
+// recording through the same decoder. Either way the World gets, each frame,
+// every sample since the last frame and the pose of the samples' path at the
+// frame's time (app/hid/hid_feed.h).
 
 #include <iosfwd>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/hid/hid_feed.h"
 #include "app/hid/hidapi_transport.h"
@@ -38,8 +40,8 @@ class RunHid {
   RunHid(const RunHid&) = delete;
   RunHid& operator=(const RunHid&) = delete;
 
-  // The pose for the frame at World time t (live: waits for its samples).
-  sim::ScalpelPose pose_at(double t) { return feed_->pose_at(t); }
+  // The samples for the frame at World time t, the last one at t (live: waits for them).
+  std::vector<sim::ScalpelKeyframe> frame_samples(double t) { return feed_->frame_samples(t); }
   // The frame at t took `step_seconds`: latency of the samples it carried.
   void stepped(double t, double step_seconds);
   // Prints the input's events ("mtcut: hid: ..."), each once.

@@ -20,4 +20,21 @@ ScalpelPose ScalpelPath::pose_at(double time) const {
   return pose;
 }
 
+std::vector<ScalpelKeyframe> ScalpelPath::samples_between(double after, double time) const {
+  std::vector<ScalpelKeyframe> out;
+  const auto by_time = [](double t, const ScalpelKeyframe& k) { return t < k.time; };
+  const auto first = std::upper_bound(keys_.begin(), keys_.end(), after, by_time);
+  const auto last = std::upper_bound(first, keys_.end(), time, by_time);
+  out.assign(first, last);
+  if (out.empty() || out.back().time != time) out.push_back({time, pose_at(time)});
+  return out;
+}
+
+std::vector<ScalpelPose> poses_of(std::span<const ScalpelKeyframe> samples) {
+  std::vector<ScalpelPose> poses;
+  poses.reserve(samples.size());
+  for (const ScalpelKeyframe& s : samples) poses.push_back(s.pose);
+  return poses;
+}
+
 }  // namespace mtcut::sim

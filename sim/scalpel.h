@@ -2,6 +2,7 @@
 // The scalpel: a blade segment (base to tip) that cuts while engaged and
 // pushes tissue (a capsule) while not. Scripted runs drive it by keyframes.
 
+#include <span>
 #include <vector>
 
 #include "engine/predicates.h"
@@ -30,6 +31,12 @@ class ScalpelPath {
   explicit ScalpelPath(std::vector<ScalpelKeyframe> keyframes) : keys_(std::move(keyframes)) {}
 
   ScalpelPose pose_at(double time) const;
+  // The samples of a frame at `time` on a sampled path (a replayed trace):
+  // the keyframes with times in (after, time], in order, then the pose at
+  // `time` as a sample at `time` (unless the last keyframe is at `time`,
+  // whose pose it is). Times strictly increase; never empty. The first
+  // frame passes after = -infinity.
+  std::vector<ScalpelKeyframe> samples_between(double after, double time) const;
   bool empty() const { return keys_.empty(); }
   double end_time() const { return keys_.empty() ? 0.0 : keys_.back().time; }
   const std::vector<ScalpelKeyframe>& keyframes() const { return keys_; }
@@ -37,5 +44,8 @@ class ScalpelPath {
  private:
   std::vector<ScalpelKeyframe> keys_;
 };
+
+// The poses of samples, in their order (what World::step takes).
+std::vector<ScalpelPose> poses_of(std::span<const ScalpelKeyframe> samples);
 
 }  // namespace mtcut::sim

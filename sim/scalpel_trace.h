@@ -10,7 +10,9 @@
 // Reals are printed shortest round-trip (std::to_chars), so reading a trace
 // back gives the very doubles that were written, and a replay is
 // bit-identical to the run that recorded it. Replayed, the samples are the
-// keyframes of a ScalpelPath (linear in between).
+// keyframes of a ScalpelPath (linear in between), and each frame the World
+// gets the samples since the last frame and the pose at the frame's time
+// (ScalpelPath::samples_between).
 
 #include <span>
 #include <string>

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <iterator>
 #include <optional>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "cut/cut_polygon.h"
@@ -70,14 +72,20 @@ void World::rebuild_model_from(const DeformationSnapshot& snapshot, const Origin
   stepper_.reset_warm_start();
 }
 
-void World::run_cut_stage(const ScalpelPose& pose, FrameMetrics& m) {
+void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   // The stroke's polygons: a straight part is cut once it ends (the blade
-  // turned or left the tissue), on the tissue's current shape.
+  // turned or left the tissue), on the tissue's current shape. Every pose of
+  // the frame goes through the sweep in order, so a turn within the frame
+  // ends a part there.
   std::vector<cut::CutPolygon> polygons;
-  if (pose.engaged) {
-    polygons = stroke_.add(pose.base, pose.tip);
-  } else if (stroke_.active()) {
-    polygons = stroke_.finish();
+  for (const ScalpelPose& pose : poses) {
+    std::vector<cut::CutPolygon> ended;
+    if (pose.engaged) {
+      ended = stroke_.add(pose.base, pose.tip);
+    } else if (stroke_.active()) {
+      ended = stroke_.finish();
+    }
+    polygons.insert(polygons.end(), std::make_move_iterator(ended.begin()), std::make_move_iterator(ended.end()));
   }
   if (!polygons.empty()) {
     // Cut in rest space (rest_space_cut.h says why).
@@ -103,14 +111,19 @@ void World::run_cut_stage(const ScalpelPose& pose, FrameMetrics& m) {
   }
 }
 
-const FrameMetrics& World::step(const ScalpelPose& pose) {
+const FrameMetrics& World::step(const ScalpelPose& pose) { return step(std::span<const ScalpelPose>(&pose, 1)); }
+
+const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
+  if (poses.empty()) throw std::invalid_argument("World::step: a frame needs at least one scalpel pose");
   const auto frame_start = Clock::now();
   FrameMetrics m;
   m.frame = frame_;
+  // Stage 1, scalpel: the last pose is the frame's.
+  const ScalpelPose& pose = poses.back();
 
   // Stage 2, cut.
   const auto cut_start = Clock::now();
-  run_cut_stage(pose, m);
+  run_cut_stage(poses, m);
   m.cut_ms = ms_since(cut_start);
   m.frozen = cutter_.frozen();
   m.cut_jobs_pending = cutter_.progress().jobs_pending;

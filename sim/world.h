@@ -4,7 +4,9 @@
 // Why this shape. The World owns the multiresolution model (MT), the
 // frontier in use, the spring model built on it and its state, and the
 // scalpel. step() runs the frame as named stages, each timed:
-//   1. scalpel   read the pose for this frame;
+//   1. scalpel   take the frame's poses: every sample of the blade since the
+//                last frame, in time order (a fast stroke is a polyline of
+//                poses, not one jump), the last one the frame's pose;
 //   2. cut       merge the engaged blade's poses into one cut polygon per
 //                straight part of the stroke (cut/stroke_sweep.h says why),
 //                carry each from the deformed tissue to rest space
@@ -23,6 +25,7 @@
 // with a still scalpel costs the integration alone.
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "cut/mt/time_critical_cutter.h"
@@ -60,6 +63,13 @@ class World {
 
   // Advances one frame of def.dt with the scalpel at `pose`.
   const FrameMetrics& step(const ScalpelPose& pose);
+  // Advances one frame of def.dt over the scalpel's poses since the last
+  // frame, in time order: each goes through the stroke sweep in turn
+  // (engaged: adds to the stroke; disengaged: ends an active stroke), so a
+  // stroke that turns within the frame is cut along its turns, not its
+  // chord. The last pose is the frame's: LOD focus, tool contact, physics.
+  // Throws std::invalid_argument for no pose.
+  const FrameMetrics& step(std::span<const ScalpelPose> poses);
 
   const engine::Mt& mt() const { return mt_; }
   const engine::Frontier& frontier() const { return frontier_; }
@@ -89,8 +99,8 @@ class World {
   engine::ErrorField error_field(const Vec3& focus) const;
   // Rebuilds springs on the current frontier and carries the state from `snapshot`.
   void rebuild_model_from(const struct DeformationSnapshot& snapshot, const struct OriginIndex* origins = nullptr);
-  // Stage 2: queue the blade's sweep, run the cutter, follow its changes.
-  void run_cut_stage(const ScalpelPose& pose, FrameMetrics& m);
+  // Stage 2: queue the blade's sweep over the poses, run the cutter, follow its changes.
+  void run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m);
   Environment environment_for(const ScalpelPose& pose) const;
 
   WorldDef def_;

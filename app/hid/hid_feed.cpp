@@ -27,14 +27,16 @@ double HidFeed::clock() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - input_->epoch()).count();
 }
 
-sim::ScalpelPose HidFeed::pose_at(double t) {
+std::vector<sim::ScalpelKeyframe> HidFeed::frame_samples(double t) {
   if (input_) {
     const auto due = input_->epoch() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                            std::chrono::duration<double>(t + lookahead_));
     std::this_thread::sleep_until(due);
     take(input_->take_until(std::chrono::steady_clock::now()));
   }
-  return path_.pose_at(t);
+  std::vector<sim::ScalpelKeyframe> samples = path_.samples_between(last_frame_, t);
+  last_frame_ = t;
+  return samples;
 }
 
 void HidFeed::reached(double t, double finished) {

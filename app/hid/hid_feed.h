@@ -1,24 +1,29 @@
 #pragma once
 // The HID as the scalpel of a frame loop: every sample, live from the input
 // thread or replayed from a recording, joins one HidPath, and each frame the
-// World gets the path's pose at the frame's time. The input's clock and the
-// World's time both start at 0 when the run starts.
+// World gets every sample since the last frame and the path's pose at the
+// frame's time, in time order (a fast stroke reaches it as a polyline of
+// poses, not one jump). The input's clock and the World's time both start at
+// 0 when the run starts.
 //
 // Live, the frame that starts at World time t is fed once the device clock
-// has passed t + lookahead (pose_at waits for it): the samples just after t,
-// which the path's pose at t is interpolated towards, are in by then, so a
-// live run gives the World the poses a replay of its recording gives (up to
-// a device silent for longer than the lookahead, whose pose then holds).
+// has passed t + lookahead (frame_samples waits for it): the samples just
+// after t, which the path's pose at t is interpolated towards, are in by
+// then, so a live run gives the World the poses a replay of its recording
+// gives (up to a device silent for longer than the lookahead, whose pose
+// then holds).
 //
 // Use from a frame loop:
 //   HidFeed hid(input, dt);                       // or HidFeed(profile, samples)
-//   every frame: pose = hid.pose_at(world.time()); world.step(pose);
+//   every frame: samples = hid.frame_samples(world.time());
+//                world.step(sim::poses_of(samples));
 //                hid.reached(t, hid.clock());     // (a replay: t + dt + step seconds)
 //                for (const InputEvent& e : hid.take_events()) tell the user;
 
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <vector>
 
 #include "app/hid/hid_path.h"
@@ -34,9 +39,12 @@ class HidFeed {
   // Live: samples as `input` (started, outliving this) queues them.
   HidFeed(InputThread& input, double lookahead_seconds);
 
-  // The pose for the frame starting at `t` s; live, first waits until the
-  // device clock reaches t + lookahead and takes every sample queued.
-  sim::ScalpelPose pose_at(double t);
+  // The samples for the frame starting at `t` s: the path's keyframes after
+  // the previous frame's time up to `t`, then the pose at `t` (the last one,
+  // at `t`); see sim::ScalpelPath::samples_between. Live, first waits until
+  // the device clock reaches t + lookahead and takes every sample queued.
+  // `t` must not decrease from call to call.
+  std::vector<sim::ScalpelKeyframe> frame_samples(double t);
   // The frame at `t` has been stepped, finishing at `finished` s on the
   // input's clock: samples up to t have reached the World (latency).
   void reached(double t, double finished);
@@ -57,6 +65,7 @@ class HidFeed {
   InputThread* input_ = nullptr;
   double lookahead_ = 0;
   HidPath path_;
+  double last_frame_ = -std::numeric_limits<double>::infinity();  // time of the last frame fed
   std::deque<std::int64_t> pending_us_;  // times of samples not yet reached by a frame
   long samples_ = 0;
   InputStatus replay_status_;

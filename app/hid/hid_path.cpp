@@ -18,14 +18,29 @@ void HidPath::add(const Sample& sample) {
   last_us_ = sample.time_us;
 }
 
-sim::ScalpelPose HidPath::pose_at(double t) {
+void HidPath::forget_before(double t) {
   // Keep one key before the last key at or before t: ScalpelPath then takes
   // the same branch and the same pair of keys as over the whole path.
   while (keys_.size() >= 3 && keys_[2].time <= t) keys_.pop_front();
+}
+
+// The keys up to the first one after t: all ScalpelPath needs for times up to t.
+sim::ScalpelPath HidPath::path_until(double t) const {
   const auto after = std::upper_bound(keys_.begin(), keys_.end(), t,
                                       [](double time, const sim::ScalpelKeyframe& k) { return time < k.time; });
   const auto end = after == keys_.end() ? after : after + 1;
-  return sim::ScalpelPath(std::vector<sim::ScalpelKeyframe>(keys_.begin(), end)).pose_at(t);
+  return sim::ScalpelPath(std::vector<sim::ScalpelKeyframe>(keys_.begin(), end));
+}
+
+sim::ScalpelPose HidPath::pose_at(double t) {
+  forget_before(t);
+  return path_until(t).pose_at(t);
+}
+
+std::vector<sim::ScalpelKeyframe> HidPath::samples_between(double after, double t) {
+  // Only keys up to `after` are forgotten: those in (after, t] are the frame's.
+  forget_before(after);
+  return path_until(t).samples_between(after, t);
 }
 
 sim::ScalpelPose initial_pose(const Profile& profile) { return PoseMapper(profile).pose(); }

@@ -4,12 +4,13 @@
 // the recording), linear in between, starting with the decoder's pose before
 // any report at time 0. A live frame loop, a replayed recording and the
 // scalpel trace `mtcut hid convert` writes all follow this one path, so a
-// replay and its trace give the World the very same poses.
+// replay and its trace give the World the very same poses: each frame, the
+// keyframes since the last frame and the pose at the frame's time.
 //
-// Kept incrementally for a live run: pose_at() forgets the keyframes no
-// later call can need (times asked for never go back), and evaluates
-// sim::ScalpelPath on the few that remain, which gives bit for bit what
-// ScalpelPath gives over every keyframe.
+// Kept incrementally for a live run: pose_at() and samples_between() forget
+// the keyframes no later call can need (times asked for never go back), and
+// evaluate sim::ScalpelPath on the few that remain, which gives bit for bit
+// what ScalpelPath gives over every keyframe.
 
 #include <deque>
 #include <span>
@@ -30,10 +31,19 @@ class HidPath {
   void add(const Sample& sample);
   // The pose at `t` seconds; `t` must not decrease from call to call.
   sim::ScalpelPose pose_at(double t);
+  // The samples of the frame at `t` after the one at `after` (-infinity for
+  // the first): what sim::ScalpelPath::samples_between gives over the whole
+  // path, bit for bit. `after` must not be before a time asked for earlier.
+  std::vector<sim::ScalpelKeyframe> samples_between(double after, double t);
   // The keyframes not forgotten yet (all of them before the first pose_at).
   std::vector<sim::ScalpelKeyframe> keyframes() const { return {keys_.begin(), keys_.end()}; }
 
  private:
+  // Forgets the keys no call at `t` or later needs.
+  void forget_before(double t);
+  // The keys up to the first one after t, as a path (all it needs up to t).
+  sim::ScalpelPath path_until(double t) const;
+
   std::deque<sim::ScalpelKeyframe> keys_;  // strictly increasing times
   std::int64_t last_us_ = 0;               // time of the last key, microseconds
 };

@@ -33,6 +33,7 @@ void ViewerSession::reset(const sim::WorldDef& def) {
   mouse_.release();
   last_pose_ = parked_pose();
   engaged_sweeps_ = 0;
+  last_step_time_ = -std::numeric_limits<double>::infinity();
   replaying_ = false;   // a reset ends a replay...
   recorded_.clear();    // ...and starts a recording again from time 0
   topology_stale_ = true;
@@ -50,26 +51,43 @@ sim::ScalpelPose ViewerSession::parked_pose() const {
   return pose;
 }
 
-sim::ScalpelPose ViewerSession::next_pose() {
+std::vector<sim::ScalpelPose> ViewerSession::next_poses() {
   hid_time_ = -1;
-  if (mouse_.active()) return mouse_.take_pose();
-  if (replaying_) return replay_.pose_at(world_->time());
+  std::vector<sim::ScalpelKeyframe> device;
   if (hid_) {
     // The device's path one step behind its clock: the samples around that
     // time are in (hid_feed.h), and the window never waits for the device.
+    // Taken every step, so a mouse stroke or a replay drops the device's
+    // samples of its steps instead of leaving them for later.
     hid_time_ = std::max(hid_->clock() - world_->def().dt, 0.0);
-    return hid_->pose_at(hid_time_);
+    device = hid_->frame_samples(hid_time_);
   }
-  if (settings_.play_script && !scenario_.scalpel.empty()) return scenario_.scalpel.pose_at(world_->time());
-  return parked_pose();
+  if (mouse_.active()) return {mouse_.take_pose()};
+  if (replaying_) return sim::poses_of(replay_.samples_between(last_step_time_, world_->time()));
+  if (hid_) return sim::poses_of(device);
+  if (settings_.play_script && !scenario_.scalpel.empty()) return {scenario_.scalpel.pose_at(world_->time())};
+  return {parked_pose()};
+}
+
+void ViewerSession::record(double t, const std::vector<sim::ScalpelPose>& poses) {
+  const double from = recorded_.empty() ? t - world_->def().dt : recorded_.back().time;
+  const std::size_t n = poses.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const double time = k + 1 == n ? t : from + (t - from) * static_cast<double>(k + 1) / static_cast<double>(n);
+    recorded_.push_back({time, poses[k]});
+  }
 }
 
 const sim::FrameMetrics& ViewerSession::step() {
-  const sim::ScalpelPose pose = next_pose();
-  if (pose.engaged && last_pose_.engaged && apart(pose, last_pose_)) ++engaged_sweeps_;
-  last_pose_ = pose;
-  if (recording_) recorded_.push_back({world_->time(), pose});
-  const sim::FrameMetrics& m = world_->step(pose);
+  const double t = world_->time();
+  const std::vector<sim::ScalpelPose> poses = next_poses();
+  for (const sim::ScalpelPose& pose : poses) {
+    if (pose.engaged && last_pose_.engaged && apart(pose, last_pose_)) ++engaged_sweeps_;
+    last_pose_ = pose;
+  }
+  if (recording_) record(t, poses);
+  const sim::FrameMetrics& m = world_->step(poses);
+  last_step_time_ = t;
   if (hid_ && hid_time_ >= 0) hid_->reached(hid_time_, hid_->clock());
   timings_.cut.push(m.cut_ms);
   timings_.lod.push(m.lod_ms);

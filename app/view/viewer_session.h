@@ -6,6 +6,7 @@
 // a test exercises is the one a user's mouse takes.
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,12 +44,15 @@ class ViewerSession {
   // Builds the scenario's organ and its MT (throws InputError on a bad mesh).
   explicit ViewerSession(ScenarioDef scenario);
 
-  // Runs one frame of physics with next_pose(), then refreshes the surface.
+  // Runs one frame of physics with next_poses(), then refreshes the surface.
   const sim::FrameMetrics& step();
-  // The pose the next step uses: a mouse stroke first, then a trace being
-  // replayed, then the HID device (when attached), then the scenario's path
-  // (when settings.play_script), else the blade parked above the organ.
-  sim::ScalpelPose next_pose();
+  // The poses the next step uses, in time order: a mouse stroke first, then
+  // a trace being replayed (its samples since the last step and its pose
+  // now), then the HID device when attached (its samples since the last
+  // step and its path's pose now), then the scenario's path (when
+  // settings.play_script), else the blade parked above the organ. One pose
+  // except from a trace or the device.
+  std::vector<sim::ScalpelPose> next_poses();
 
   // The HID device drives the blade (`mtcut view --hid`); null detaches.
   // `feed` is live, outlives the session or is detached first.
@@ -60,7 +64,9 @@ class ViewerSession {
   const std::string& hid_message() const { return hid_message_; }
 
   // Recording what the user does (mouse, device, script) as a scalpel trace:
-  // the World starts again at time 0 and every step's pose is kept.
+  // the World starts again at time 0 and every step's poses are kept (a
+  // step's last at its World time, the others of the device spread evenly
+  // over the step before it, so a replay gives the World the same poses).
   void start_recording();
   bool recording() const { return recording_; }
   // Writes the poses kept since start_recording() to `path` (the trace
@@ -92,10 +98,10 @@ class ViewerSession {
   // geometry always (call after changing settings().shading).
   void refresh_surface();
 
-  // The pose given to the World in the last step (parked before any).
+  // The last pose given to the World (parked before any).
   const sim::ScalpelPose& last_pose() const { return last_pose_; }
-  // Steps whose pose and the one before were both engaged and apart: sweeps
-  // the World was asked to cut.
+  // Poses that were engaged and apart from the one before, also engaged:
+  // sweeps the World was asked to cut.
   std::uint64_t engaged_sweeps() const { return engaged_sweeps_; }
   // MT vertices when loaded; more now means a cut made vertices.
   std::size_t loaded_vertices() const { return loaded_vertices_; }
@@ -128,8 +134,12 @@ class ViewerSession {
   bool topology_stale_ = true;
   std::uint64_t levels_revision_ = UINT64_MAX;
 
+  // Keeps a step's poses at World time t in the recording.
+  void record(double t, const std::vector<sim::ScalpelPose>& poses);
+
   sim::ScalpelPose last_pose_;
   std::uint64_t engaged_sweeps_ = 0;
+  double last_step_time_ = -std::numeric_limits<double>::infinity();  // World time of the last step
 
   hid::HidFeed* hid_ = nullptr;  // not owned
   double hid_time_ = -1;         // the device-clock time of the last pose taken from it (-1: none)

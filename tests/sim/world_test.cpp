@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <span>
+#include <stdexcept>
 
 #include "engine/mesh_loader.h"
 #include "engine/mt/mt_builder.h"
@@ -193,6 +196,71 @@ TEST(World, TinyCutBudgetEndsWithTheSameMtAndFreezesTheFrontier) {
   EXPECT_TRUE(mt_contents(tiny.mt()) == mt_contents(unlimited.mt()));
   EXPECT_EQ(tiny.pieces(), unlimited.pieces());
   EXPECT_TRUE(tiny.validate().ok());
+}
+
+// A vertical blade at (x, y), engaged or not (the organ spans |z| < 3.5 cm).
+ScalpelPose blade_at(double x, double y, bool engaged = true) {
+  return {Vec3(x, y, 0.06), Vec3(x, y, -0.07), engaged};
+}
+
+// An L-shaped stroke as samples: along y at x = 4 cm from y = -6 cm to the
+// corner at y = 0, then along x at y = 0 back to x = -2 cm, engaged.
+std::vector<ScalpelPose> l_stroke() {
+  std::vector<ScalpelPose> poses;
+  for (int k = 0; k <= 8; ++k) poses.push_back(blade_at(0.04, -0.06 + 0.06 * k / 8));
+  for (int k = 1; k <= 8; ++k) poses.push_back(blade_at(0.04 - 0.06 * k / 8, 0.0));
+  return poses;
+}
+
+// Runs the frames (each a list of poses), validating after each, then
+// frames with the blade lifted until the cutter's queue drains; returns the
+// rest positions of the MT vertices the cuts made.
+std::vector<Vec3> made_vertices(const std::vector<std::vector<ScalpelPose>>& frames) {
+  World world(organ_mt(2000), organ_def());
+  const std::size_t before = world.mt().num_vertices();
+  for (const auto& poses : frames) {
+    world.step(poses);
+    const auto report = world.validate();
+    EXPECT_TRUE(report.ok()) << "frame " << world.frame() << ": " << report.summary();
+  }
+  const ScalpelPose lifted = blade_at(-0.02, 0.0, false);
+  for (int f = 0; f < 40 && (f < 2 || world.cutter().frozen()); ++f) world.step(lifted);
+  EXPECT_FALSE(world.cutter().frozen());
+  EXPECT_TRUE(world.validate().ok());
+  EXPECT_EQ(world.nan_events(), 0u);
+  return std::vector<Vec3>(world.mt().positions().begin() + static_cast<std::ptrdiff_t>(before),
+                           world.mt().positions().end());
+}
+
+// Made vertices near the middle of the first leg (the plane x = 4 cm) and of
+// the second (y = 0), away from the corner and the ends.
+std::pair<int, int> near_legs(const std::vector<Vec3>& made) {
+  int first = 0, second = 0;
+  for (const Vec3& p : made) {
+    first += std::abs(p.x() - 0.04) < 0.003 && p.y() > -0.035 && p.y() < -0.01;
+    second += std::abs(p.y()) < 0.003 && p.x() > -0.005 && p.x() < 0.025;
+  }
+  return {first, second};
+}
+
+TEST(World, AStrokeThatTurnsWithinOneFrameIsCutAlongBothLegsNotItsChord) {
+  const std::vector<ScalpelPose> stroke = l_stroke();
+  // The whole L in one frame, as the HID hands a fast stroke's samples.
+  const std::vector<Vec3> polyline = made_vertices({stroke});
+  // Only the frame's last pose after the first: the blade jumps along the chord.
+  const std::vector<Vec3> chord = made_vertices({{stroke.front()}, {stroke.back()}});
+
+  ASSERT_FALSE(chord.empty()) << "the chord itself cuts";
+  EXPECT_EQ(near_legs(chord), std::make_pair(0, 0));
+  const auto [first, second] = near_legs(polyline);
+  EXPECT_GT(first, 0) << "the first leg was not cut";
+  EXPECT_GT(second, 0) << "the second leg was not cut";
+}
+
+TEST(World, AFrameNeedsAPose) {
+  World world(organ_mt(2000), organ_def());
+  EXPECT_THROW(world.step(std::span<const ScalpelPose>()), std::invalid_argument);
+  EXPECT_EQ(world.frame(), 0u);
 }
 
 }  // namespace

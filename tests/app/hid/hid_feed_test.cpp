@@ -5,13 +5,19 @@
 // reconnection is retried until it succeeds, and the World runs on: no
 // reset, no frame lost, the cut kept, the stroke resumed. Waits are the
 // feed's own real-time pacing; nothing is timed.
+// Also, replayed: each frame gets every sample since the last frame, then
+// the pose at its time.
 
 #include "app/hid/hid_feed.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
+#include <unistd.h>
+
+#include "app/hid/recording.h"
 #include "app/hid/profile_file.h"
 #include "app/run_command.h"
 #include "sim/world.h"
@@ -31,6 +37,52 @@ std::vector<std::uint8_t> pen_at(double x, double y) {
   return test::pen_report(true, raw_axis(x / 0.1), raw_axis(-y / 0.1), 8191, 0, 0);
 }
 
+// A vertical blade at (x, y) over the organ, engaged.
+sim::ScalpelPose blade_at(double x, double y) {
+  return {engine::Vec3(x, y, 0.04), engine::Vec3(x, y, -0.07), true};
+}
+
+bool same_pose(const sim::ScalpelPose& a, const sim::ScalpelPose& b) {
+  return a.base == b.base && a.tip == b.tip && a.engaged == b.engaged;
+}
+
+TEST(HidFeed, EachFrameGetsEverySampleSinceTheLastFrameThenItsPose) {
+  const Profile profile = load_profile("pen_tablet");
+  // Four samples a frame of 20 ms, a turn at the corner, one sample exactly
+  // at a frame's time.
+  std::vector<Sample> samples;
+  for (int k = 0; k < 12; ++k) {
+    Sample s;
+    s.time_us = 3000 + 5000 * k;
+    s.pose = k < 6 ? blade_at(0.04, -0.06 + 0.01 * k) : blade_at(0.04 - 0.01 * (k - 5), 0.0);
+    samples.push_back(s);
+  }
+  samples.push_back({80000, blade_at(-0.03, 0.0)});
+  const sim::ScalpelPath whole(to_keyframes(profile, samples));
+  HidFeed feed(profile, samples);
+  const std::vector<double> frames = {0.0, 0.02, 0.04, 0.06, samples.back().time(), 0.1};
+  std::vector<std::vector<sim::ScalpelKeyframe>> got;
+  for (const double t : frames) got.push_back(feed.frame_samples(t));
+
+  ASSERT_EQ(got[0].size(), 1u);  // the initial pose at time 0
+  EXPECT_TRUE(same_pose(got[0][0].pose, initial_pose(profile)));
+  for (std::size_t f = 1; f < frames.size(); ++f) {
+    // The samples in (previous frame, frame], in order, then the path's pose at the frame.
+    std::vector<sim::ScalpelPose> want;
+    for (const Sample& s : samples)
+      if (s.time() > frames[f - 1] && s.time() <= frames[f]) want.push_back(s.pose);
+    const bool sample_at_frame = samples.back().time() == frames[f];
+    if (!sample_at_frame) want.push_back(whole.pose_at(frames[f]));
+    ASSERT_EQ(got[f].size(), want.size()) << "frame " << f;
+    for (std::size_t i = 0; i < want.size(); ++i) EXPECT_TRUE(same_pose(got[f][i].pose, want[i])) << f << ", " << i;
+    EXPECT_EQ(got[f].back().time, frames[f]);
+  }
+  EXPECT_EQ(got[1].size(), 5u);  // four samples (3 to 18 ms), then the pose at 20 ms
+  EXPECT_EQ(got[3].size(), 5u);  // the turn: 43 to 58 ms, then the pose at 60 ms
+  EXPECT_EQ(got[4].size(), 1u);  // the sample at the frame's time is its pose
+  EXPECT_EQ(got[5].size(), 1u);  // no sample: the last one's pose holds
+}
+
 TEST(HidFeed, AnUnplugMidStrokeIsToldOnceDisengagesAndTheWorldRunsOn) {
   ScenarioDef scenario = load_scenario(test::source_path("config/scenarios/default.toml"));
   scenario.mesh_load.builtin_tets = 1500;
@@ -39,7 +91,10 @@ TEST(HidFeed, AnUnplugMidStrokeIsToldOnceDisengagesAndTheWorldRunsOn) {
   const double dt = scenario.world.dt;
 
   test::FakeTransport transport(kPen);
+  const std::string recording = (std::filesystem::temp_directory_path() /
+                                 ("mtcut-hid-feed-" + std::to_string(::getpid()) + ".hidrec")).string();
   InputDef def;
+  def.record_path = recording;
   def.read_timeout_ms = 5;
   def.retry_seconds = 0.002;
   InputThread input(transport, load_profile("pen_tablet"), def);
@@ -47,7 +102,8 @@ TEST(HidFeed, AnUnplugMidStrokeIsToldOnceDisengagesAndTheWorldRunsOn) {
   HidFeed feed(input, dt);
 
   constexpr int kUnplugFrame = 20, kBackFrame = 30, kFrames = 60;
-  std::vector<sim::ScalpelPose> poses;
+  std::vector<sim::ScalpelPose> poses;             // the frames' poses
+  std::vector<sim::ScalpelKeyframe> handed;        // every sample the World got
   std::vector<InputEvent> events;
   std::size_t cuts_started = 0, vertices_at_reconnect = 0;
   for (int f = 0; f < kFrames; ++f) {
@@ -57,8 +113,10 @@ TEST(HidFeed, AnUnplugMidStrokeIsToldOnceDisengagesAndTheWorldRunsOn) {
     if (f == kUnplugFrame) transport.queue_unplug(3);  // gone for three lookups
     if (f >= kBackFrame) transport.queue_bytes(pen_at(0.04, 0.06 * (f - kBackFrame) / (kFrames - kBackFrame)));
     const double t = world.time();
-    poses.push_back(feed.pose_at(t));
-    world.step(poses.back());
+    const std::vector<sim::ScalpelKeyframe> frame = feed.frame_samples(t);
+    handed.insert(handed.end(), frame.begin(), frame.end());
+    poses.push_back(frame.back().pose);
+    world.step(sim::poses_of(frame));
     feed.reached(t, feed.clock());
     cuts_started += world.last_frame().cuts_started;
     for (InputEvent& e : feed.take_events()) events.push_back(std::move(e));
@@ -96,6 +154,26 @@ TEST(HidFeed, AnUnplugMidStrokeIsToldOnceDisengagesAndTheWorldRunsOn) {
   EXPECT_EQ(world.nan_events(), 0u);
   const engine::ValidationReport valid = world.validate();
   EXPECT_TRUE(valid.ok()) << (valid.ok() ? "" : valid.problems.front());
+
+  // Every sample (as the recording of the reports decodes them) up to the
+  // last frame's time reached the World, once, in order: none is left out
+  // between two frames.
+  const auto keys = to_keyframes(input.profile(), replay_recording(recording, input.profile()));
+  std::filesystem::remove(recording);
+  std::size_t found = 0;
+  for (std::size_t i = 0; i < handed.size(); ++i) {
+    if (i > 0) {
+      EXPECT_GT(handed[i].time, handed[i - 1].time);
+    }
+    if (found < keys.size() && handed[i].time == keys[found].time) {
+      EXPECT_TRUE(same_pose(handed[i].pose, keys[found].pose)) << "sample at " << keys[found].time;
+      ++found;
+    }
+  }
+  ASSERT_LT(0u, found);
+  EXPECT_TRUE(found == keys.size() || keys[found].time > handed.back().time)
+      << "the sample at " << keys[found].time << " s did not reach the World";
+  EXPECT_GT(found, static_cast<std::size_t>(kUnplugFrame));
 
   // Every sample up to the last frame's time reached the World, with a latency.
   const LatencySummary latency = feed.latency();

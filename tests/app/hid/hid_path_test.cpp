@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
+
 #include "app/hid/profile_file.h"
 
 namespace mtcut::app::hid {
@@ -64,6 +67,52 @@ TEST(HidPath, LiveEvaluationIsTheWholePathsBitForBit) {
     while (added < samples.size() && samples[added].time() <= t + 1.0 / 60.0) live.add(samples[added++]);
     EXPECT_TRUE(same(live.pose_at(t), whole.pose_at(t))) << "t = " << t;
   }
+  EXPECT_LT(live.keyframes().size(), 10u);  // old keyframes forgotten
+}
+
+TEST(HidPath, LiveFrameSamplesAreTheWholePathsBitForBit) {
+  const Profile profile = load_profile("pen_tablet");
+  std::vector<Sample> samples;
+  for (int k = 0; k < 200; ++k) samples.push_back(sample(3000 + 2917 * k + (k % 3) * 1000, 0.001 * k * k, k % 17 != 0));
+  const auto keys = to_keyframes(profile, samples);
+  const sim::ScalpelPath whole(keys);
+  HidPath live(initial_pose(profile));
+  std::size_t added = 0;
+  // Frames at 1/60 s, two at exact keyframe times; samples join as they arrive.
+  std::vector<double> times;
+  for (int f = 0; f < 40; ++f) times.push_back(f / 60.0);
+  times.push_back(keys[10].time);
+  times.push_back(keys[150].time);
+  std::sort(times.begin(), times.end());
+  double after = -std::numeric_limits<double>::infinity();
+  std::vector<sim::ScalpelKeyframe> handed;
+  for (const double t : times) {
+    while (added < samples.size() && samples[added].time() <= t + 1.0 / 60.0) live.add(samples[added++]);
+    const auto got = live.samples_between(after, t);
+    const auto want = whole.samples_between(after, t);
+    ASSERT_EQ(got.size(), want.size()) << "t = " << t;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(got[i].time, want[i].time);
+      EXPECT_TRUE(same(got[i].pose, want[i].pose)) << "t = " << t << ", sample " << i;
+    }
+    // The frame's samples: after the last frame, up to t, the last one at t.
+    ASSERT_FALSE(got.empty());
+    EXPECT_EQ(got.back().time, t);
+    EXPECT_TRUE(same(got.back().pose, whole.pose_at(t)));
+    EXPECT_GT(got.front().time, after);
+    handed.insert(handed.end(), got.begin(), got.end());
+    after = t;
+  }
+  // Every keyframe up to the last frame reached a frame, once, in order.
+  std::size_t found = 0;
+  for (const auto& h : handed) {
+    if (found < keys.size() && h.time == keys[found].time) {
+      EXPECT_TRUE(same(h.pose, keys[found].pose)) << "t = " << h.time;
+      ++found;
+    }
+  }
+  EXPECT_GT(found, 100u);
+  EXPECT_TRUE(found == keys.size() || keys[found].time > times.back());
   EXPECT_LT(live.keyframes().size(), 10u);  // old keyframes forgotten
 }
 

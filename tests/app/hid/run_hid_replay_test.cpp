@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -45,7 +46,7 @@ TEST_F(RunHidReplay, ARecordingCutsTheOrganExactlyAsItsConvertedTrace) {
   const std::string rec = write("stroke.hidrec", pen_stroke_recording());
   const std::string scenario = source_path("config/scenarios/default.toml");
   const auto replayed = run_json("run " + quoted(scenario) + " --frames 90 --out " + quoted(path("replay")) +
-                                 " --hid-replay " + quoted(rec));
+                                 " --hid-replay " + quoted(rec) + " --record " + quoted(path("recorded.csv")));
 
   const CommandResult converted =
       run_mtcut("hid convert " + quoted(rec) + " --profile pen_tablet -o " + quoted(path("trace.csv")));
@@ -56,6 +57,15 @@ TEST_F(RunHidReplay, ARecordingCutsTheOrganExactlyAsItsConvertedTrace) {
   ASSERT_FALSE(replayed.is_null());
   ASSERT_FALSE(traced.is_null());
   EXPECT_EQ(replayed["state_hash"], traced["state_hash"]);
+
+  // --record keeps every pose the World got (the samples within each frame,
+  // then the frame's pose), so its trace replays the run exactly too.
+  const std::string recorded = read_text(path("recorded.csv"));
+  EXPECT_GT(std::count(recorded.begin(), recorded.end(), '\n'), 1 + 90 + 100);
+  const auto rerun = run_json("run " + quoted(write("recorded.toml", replay_of("recorded.csv"))) +
+                              " --frames 90 --out " + quoted(path("rerun")));
+  ASSERT_FALSE(rerun.is_null());
+  EXPECT_EQ(rerun["state_hash"], replayed["state_hash"]);
 
   // The stroke cut the organ: the flap is a piece of its own, made of new tets.
   EXPECT_GE(replayed["pieces"].get<int>(), 2);
