@@ -164,15 +164,7 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
 
   // Every split, and the points the cut makes, in key order.
   if (table.scheme() != def_.scheme) throw std::invalid_argument("MtCut: the split table is for another scheme");
-  // Every new point each tet asks for, in the tets' order; then sorted by
-  // key (stable: a point several tets share keeps the first tet's source),
-  // one per key. Sorting (key, index) pairs moves 32 bytes, not the sources.
-  std::vector<PointSource> sources;
-  std::vector<std::pair<PointKey, std::uint32_t>> asked;
-  auto ask = [&](const PointKey& key, const PointSource& source) {
-    asked.emplace_back(key, static_cast<std::uint32_t>(sources.size()));
-    sources.push_back(source);
-  };
+  std::unordered_map<PointKey, PointSource, PointKeyHash> points;
   for (Pending& p : pending_) {
     const Tet& tet = mt.tet(p.tet);
     if (p.split) {
@@ -182,17 +174,15 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
       for (std::size_t k = 0; k < p.keyed.points.size(); ++k) {
         const PointKey& key = p.keyed.points[k];
         if (key.kind == PointKind::kVertexCopy && key.side > 0) continue;  // the vertex itself
-        ask(key, p.keyed.sources[k]);
+        points.emplace(key, p.keyed.sources[k]);
       }
     } else {
       for (VertId v : tet)
-        if (classifier_.state(v) == VertexState::kOnActive) ask(copy_key(v), copy_source(v, geometry_));
+        if (classifier_.state(v) == VertexState::kOnActive) points.emplace(copy_key(v), copy_source(v, geometry_));
     }
   }
-  std::stable_sort(asked.begin(), asked.end(), [](const auto& a, const auto& b) { return key_less(a.first, b.first); });
-  points_.reserve(asked.size());
-  for (std::size_t i = 0; i < asked.size(); ++i)
-    if (i == 0 || !(asked[i].first == asked[i - 1].first)) points_.emplace_back(asked[i].first, sources[asked[i].second]);
+  points_.assign(points.begin(), points.end());
+  std::sort(points_.begin(), points_.end(), [](const auto& a, const auto& b) { return key_less(a.first, b.first); });
 
   // Jobs: the fragments creating the pending tets.
   for (const Pending& p : pending_) jobs_.push_back(mt.birth(p.tet));
