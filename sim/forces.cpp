@@ -49,6 +49,14 @@ void compute_forces(const SpringModel& model, const Environment& env, const Spri
   if (!model.tet_particles.empty()) add_volume_forces(model, state, f);
 }
 
+void compute_body_forces(const SpringModel& model, const Environment& env, const SpringState& state,
+                         std::vector<Vec3>& f) {
+  const std::size_t n = model.num_particles();
+  f.resize(n);
+  for (std::size_t i = 0; i < n; ++i) f[i] = model.mass[i] * (env.gravity - model.mass_damping * state.v[i]);
+  if (!model.tet_particles.empty()) add_volume_forces(model, state, f);
+}
+
 double total_energy(const SpringModel& model, const Environment& env, const SpringState& state) {
   double e = 0;
   for (std::size_t i = 0; i < model.num_particles(); ++i)
