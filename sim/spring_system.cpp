@@ -6,6 +6,8 @@
 namespace mtcut::sim {
 namespace {
 
+constexpr double kTinyLength2 = 1e-300;  // m^2, below any real spring's
+
 void add_block(Sym3& d, const SpringBlock& blk) {
   const Vec3& w = blk.w;
   d.xx += w.x() * w.x() + blk.across;
@@ -14,6 +16,15 @@ void add_block(Sym3& d, const SpringBlock& blk) {
   d.yy += w.y() * w.y() + blk.across;
   d.yz += w.y() * w.z();
   d.zz += w.z() * w.z() + blk.across;
+}
+
+void add_sym(Sym3& d, const Sym3& e) {
+  d.xx += e.xx;
+  d.xy += e.xy;
+  d.xz += e.xz;
+  d.yy += e.yy;
+  d.yz += e.yz;
+  d.zz += e.zz;
 }
 
 }  // namespace
@@ -27,7 +38,6 @@ Sym3 Sym3::inverse() const {
 
 void SpringSystem::resize(std::size_t n, std::size_t m) {
   blocks_.resize(m);
-  g_.resize(m);
   row_.resize(n + 1);
   for (auto* v : {&own_, &diag_, &diag_inverse_}) v->resize(n);
   for (auto* v : {&r_, &rhat_, &z_, &p_, &t_, &ut_, &q_, &acc_}) v->resize(n);
@@ -44,35 +54,6 @@ void SpringSystem::assemble(const SpringModel& model, const SpringState& state, 
   spring_b_ = model.spring_b.data();
   const double h2 = h * h;
 
-  // Per spring, independent of the others (pipelines well): B_s and g_s.
-  const Vec3 *x = state.x.data(), *v = state.v.data();
-  const double *rest = model.rest_length.data(), *stiffness = model.stiffness.data(), *damping = model.damping.data();
-  SpringBlock* blocks = blocks_.data();
-  Vec3* g = g_.data();
-  for (std::size_t s = 0; s < m; ++s) {
-    const auto a = spring_a_[s], c = spring_b_[s];
-    const Vec3 d = x[c] - x[a];
-    const double length2 = d.squaredNorm();
-    const double k = stiffness[s];
-    const Vec3 dv0 = v[a] - v[c];
-    if (length2 > 0) {
-      const double inv_length = 1.0 / std::sqrt(length2);
-      const Vec3 dir = d * inv_length;
-      const double t = std::max(0.0, 1.0 - rest[s] * inv_length);
-      const double along = h * damping[s] + h2 * k * (1.0 - t), across = h2 * k * t;
-      const double dn = dir.dot(dv0);
-      // h f_a = h (k (l - L) - c n . dv0) n; minus h^2 J_s dv0.
-      g[s] = (h * k * (length2 * inv_length - rest[s]) - along * dn) * dir - across * dv0;
-      blocks[s] = {std::sqrt(along) * dir, across};
-    } else {  // no direction, no force: the dashpot-free longitudinal block along x
-      const double along = h * damping[s] + h2 * k;
-      g[s] = Vec3(-h2 * k * dv0.x(), 0, 0);
-      blocks[s] = {Vec3(std::sqrt(along), 0, 0), 0.0};
-    }
-  }
-
-  // Scatter into the diagonal blocks and b; mask springs at fixed particles;
-  // find each particle's first spring.
   const double mass_factor = 1.0 + h * model.mass_damping;
   const double* inv_mass = model.inv_mass.data();
   for (std::size_t i = 0; i < n; ++i) {
@@ -80,21 +61,56 @@ void SpringSystem::assemble(const SpringModel& model, const SpringState& state, 
     diag_[i] = own_[i];
     b[i] = h * f[i];
   }
+
+  // One pass over the springs: B_s into the diagonal blocks, g_s into b;
+  // springs at fixed particles masked; each particle's first spring found.
+  // A run of springs with the same first particle a sums its share of a's
+  // diagonal block and b in registers (not through memory, spring after
+  // spring: a chain of stores and reloads).
+  const Vec3 *x = state.x.data(), *v = state.v.data();
+  const double *rest = model.rest_length.data(), *stiffness = model.stiffness.data(), *damping = model.damping.data();
+  SpringBlock* blocks = blocks_.data();
   rows_sorted_ = true;
   std::size_t row = 0;  // the next particle whose springs have not begun
-  for (std::size_t s = 0; s < m; ++s) {
-    const auto a = spring_a_[s], c = spring_b_[s];
-    add_block(diag_[a], blocks[s]);
-    add_block(diag_[c], blocks[s]);
-    b[a] += g[s];
-    b[c] -= g[s];
-    if (inv_mass[a] == 0 || inv_mass[c] == 0) {  // masked: fixed rows decouple
-      if (inv_mass[a] != 0) add_block(own_[a], blocks[s]);
-      if (inv_mass[c] != 0) add_block(own_[c], blocks[s]);
-      blocks[s] = SpringBlock{};
-    }
+  for (std::size_t s = 0; s < m;) {
+    const auto a = spring_a_[s];
     if (static_cast<std::size_t>(a) + 1 < row) rows_sorted_ = false;
     while (row <= static_cast<std::size_t>(a)) row_[row++] = static_cast<std::int32_t>(s);
+    const Vec3 xa = x[a], va = v[a];
+    const bool a_fixed = inv_mass[a] == 0;
+    Sym3 diag_a{};
+    Vec3 b_a = Vec3::Zero();
+    for (; s < m && spring_a_[s] == a; ++s) {
+      const auto c = spring_b_[s];
+      const Vec3 d = x[c] - xa;
+      // Branch-free (a branch on the sign of t, which flips spring to
+      // spring, mispredicts half the time and stalls the pipeline):
+      // + kTinyLength2 is exact for any real spring, and a zero-length one
+      // gets dir = 0 and adds nothing; t = max(0, u) = (u + |u|) / 2 exactly.
+      const double inv_length = 1.0 / std::sqrt(d.squaredNorm() + kTinyLength2);
+      const Vec3 dir = d * inv_length;
+      const double k = stiffness[s];
+      const double u = 1.0 - rest[s] * inv_length;
+      const double t = 0.5 * (u + std::abs(u));
+      const double along = h * damping[s] + h2 * k * (1.0 - t), across = h2 * k * t;
+      const Vec3 dv0 = va - v[c];
+      const double dn = dir.dot(dv0);
+      // g_s = h f_a = h (k (l - L) - c n . dv0) n, l = |d|^2 / |d|, minus h^2 J_s dv0.
+      const Vec3 g = (h * k * (d.squaredNorm() * inv_length - rest[s]) - along * dn) * dir - across * dv0;
+      b_a += g;
+      b[c] -= g;
+      SpringBlock blk{std::sqrt(along) * dir, across};
+      add_block(diag_a, blk);
+      add_block(diag_[c], blk);
+      if (a_fixed || inv_mass[c] == 0) {  // masked: fixed rows decouple
+        if (!a_fixed) add_block(own_[a], blk);
+        if (inv_mass[c] != 0) add_block(own_[c], blk);
+        blk = SpringBlock{};
+      }
+      blocks[s] = blk;
+    }
+    b[a] += b_a;
+    add_sym(diag_[a], diag_a);
   }
   while (row <= n) row_[row++] = static_cast<std::int32_t>(m);
   for (std::size_t i = 0; i < n; ++i) {
@@ -110,11 +126,17 @@ void SpringSystem::assemble(const SpringModel& model, const SpringState& state, 
 void SpringSystem::multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out) const {
   const std::size_t n = own_.size(), m = blocks_.size();
   for (std::size_t i = 0; i < n; ++i) out[i] = own_[i] * u[i];
-  for (std::size_t s = 0; s < m; ++s) {
-    const auto a = spring_a_[s], c = spring_b_[s];
-    const Vec3 t = blocks_[s] * (u[a] - u[c]);
-    out[a] += t;
-    out[c] -= t;
+  for (std::size_t s = 0; s < m;) {  // runs of springs with the same first particle, as in assemble
+    const auto a = spring_a_[s];
+    const Vec3 ua = u[a];
+    Vec3 out_a = Vec3::Zero();
+    for (; s < m && spring_a_[s] == a; ++s) {
+      const auto c = spring_b_[s];
+      const Vec3 t = blocks_[s] * (ua - u[c]);
+      out_a += t;
+      out[c] -= t;
+    }
+    out[a] += out_a;
   }
 }
 
@@ -163,13 +185,15 @@ CgStats SpringSystem::solve_block_jacobi(const std::vector<Vec3>& b, double tole
   return stats;
 }
 
-// CG on Ahat xhat = W^-1 b, Ahat = W^-1 A W^-T, W = D + L, preconditioned by
-// D^-1 (z = D rhat): PCG on A with M = W D^-1 W^T. Eisenstat: with
-// t = (D + U)^-1 p (backward sweep), Ahat p = t + (D + L)^-1 (U t) (forward
-// sweep), and x = W^-T xhat moves by alpha t. Off-diagonal blocks are -B_s,
-// so (U t)_i = -sum B_s t_b over i's springs.
+// SSOR with relaxation w: W = D / w + L, A = W + W^T - (2 / w - 1) D.
+// CG on Ahat xhat = W^-1 b, Ahat = W^-1 A W^-T, preconditioned by D (z =
+// D rhat): PCG on A with M ~ W D^-1 W^T. Eisenstat: with t = W^-T p (backward
+// sweep), Ahat p = t + W^-1 (p - (2 / w - 1) D t) (forward sweep), and
+// x = W^-T xhat moves by alpha t. Off-diagonal blocks are -B_s, so with
+// sum_i = sum B_s t_b over i's springs, t_i = w D_i^-1 (p_i + sum_i) and
+// (p - (2 / w - 1) D t)_i = (w - 1) p_i - (2 - w) sum_i.
 //
-// The true residual r = W rhat = D rhat + L rhat costs a sweep, so it is
+// The true residual r = W rhat = D rhat / w + L rhat costs a sweep, so it is
 // computed only when rhat . D rhat, scaled by the ratio |r|^2 / rhat . D rhat
 // at the last check, predicts convergence.
 CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tolerance2, int max_iterations,
@@ -187,7 +211,7 @@ CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tole
   const auto true_residual2 = [&] {
     double rr = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 r = z[i] - acc[i];
+      const Vec3 r = z[i] * (1 / kRelaxation) - acc[i];
       acc[i].setZero();
       rr += r.squaredNorm();
       for (std::int32_t s = row[i]; s < row[i + 1]; ++s) acc[other[s]] += blk[s] * rhat[i];
@@ -201,7 +225,7 @@ CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tole
   for (std::size_t i = 0; i < n; ++i) {  // rhat = W^-1 r, r = b - A x
     const Vec3 r = b[i] - q[i];
     rr += r.squaredNorm();
-    rhat[i] = dinv[i] * (r + acc[i]);
+    rhat[i] = dinv[i] * (kRelaxation * (r + acc[i]));
     acc[i].setZero();
     for (std::int32_t s = row[i]; s < row[i + 1]; ++s) acc[other[s]] += blk[s] * rhat[i];
     z[i] = diag[i] * rhat[i];
@@ -221,16 +245,16 @@ CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tole
       }
       if (rr <= tolerance2) break;
     }
-    for (std::size_t i = n; i-- > 0;) {  // p = z + beta p; t = (D + U)^-1 p
+    for (std::size_t i = n; i-- > 0;) {  // p = z + beta p; t = W^-T p
       Vec3 sum = Vec3::Zero();
       for (std::int32_t s = row[i]; s < row[i + 1]; ++s) sum += blk[s] * t[other[s]];
-      ut[i] = sum;  // -(U t)_i
+      ut[i] = sum;
       p[i] = z[i] + beta * p[i];
-      t[i] = dinv[i] * (p[i] + sum);
+      t[i] = dinv[i] * (kRelaxation * (p[i] + sum));
     }
     double pq = 0;
-    for (std::size_t i = 0; i < n; ++i) {  // q = t + (D + L)^-1 U t
-      const Vec3 s_i = dinv[i] * (acc[i] - ut[i]);
+    for (std::size_t i = 0; i < n; ++i) {  // q = Ahat p = t + W^-1 (p - (2 / w - 1) D t)
+      const Vec3 s_i = dinv[i] * (kRelaxation * (acc[i] + (kRelaxation - 1) * p[i] - (2 - kRelaxation) * ut[i]));
       acc[i].setZero();
       q[i] = t[i] + s_i;
       pq += p[i].dot(q[i]);

@@ -19,11 +19,12 @@
 //
 // Two preconditioners:
 //  - block Jacobi: the exact inverse 3x3 diagonal blocks D_i^-1;
-//  - symmetric block Gauss-Seidel, M = (D + L) D^-1 (D + L^T), with L the
-//    strictly lower off-diagonal blocks in particle order, applied with
-//    Eisenstat's trick (CG on (D + L)^-1 A (D + L^T)^-1): one backward and
-//    one forward sweep over the springs per iteration, about the cost of a
-//    product with A, for roughly half the iterations. The sweeps walk the
+//  - block SSOR (symmetric Gauss-Seidel over-relaxed by kRelaxation),
+//    M ~ (D / w + L) D^-1 (D / w + L^T), with L the strictly lower
+//    off-diagonal blocks in particle order, applied with Eisenstat's trick
+//    (CG on W^-1 A W^-T, W = D / w + L): one backward and one forward sweep
+//    over the springs per iteration, about the cost of a product with A,
+//    for well under half the iterations. The sweeps walk the
 //    springs grouped by their first particle, so they need the springs
 //    sorted by spring_a (build_spring_model sorts them); otherwise the
 //    solver falls back to block Jacobi.
@@ -39,6 +40,11 @@
 namespace mtcut::sim {
 
 enum class PreconditionerKind { kBlockJacobi, kSymmetricGaussSeidel };
+
+// The SSOR relaxation factor w (1 = symmetric Gauss-Seidel). On the bench
+// box 1.2 saves ~6% of the iterations over 1; the optimum grows with the
+// stiffness, and anything in (0, 2) keeps the preconditioner SPD.
+inline constexpr double kRelaxation = 1.2;
 
 // A symmetric 3x3 matrix (xx, xy, xz, yy, yz, zz).
 struct Sym3 {
@@ -98,7 +104,6 @@ class SpringSystem {
   const std::int32_t* spring_a_ = nullptr;
   const std::int32_t* spring_b_ = nullptr;
   std::vector<SpringBlock> blocks_;
-  std::vector<Vec3> g_;  // spring s's share of b (+ at a, - at b)
   // (n_particles + 1) springs of particle i as first end: [row_[i], row_[i + 1]).
   std::vector<std::int32_t> row_;
   bool rows_sorted_ = false;

@@ -21,7 +21,10 @@ bool state_is_sane(const SpringState& state, double max_speed) {
 
 void Stepper::resize(const SpringModel& model) {
   const std::size_t n = model.num_particles();
-  if (dv_.size() != n) dv_.assign(n, Vec3::Zero());  // a new model: no warm start
+  if (dv_.size() != n) {  // a new model: no warm start
+    dv_.assign(n, Vec3::Zero());
+    dv_last_.assign(n, Vec3::Zero());
+  }
   for (auto* v : {&f_, &saved_x_, &saved_v_, &b_}) v->resize(n);
 }
 
@@ -50,6 +53,7 @@ StepReport Stepper::step(const SpringModel& model, const Environment& env, const
     std::copy(saved_x_.begin(), saved_x_.end(), state.x.begin());
     std::copy(saved_v_.begin(), saved_v_.end(), state.v.begin());
     std::fill(dv_.begin(), dv_.end(), Vec3::Zero());
+    std::fill(dv_last_.begin(), dv_last_.end(), Vec3::Zero());
     ++refused_steps_;
     report.accepted = false;
   }
@@ -70,10 +74,16 @@ int Stepper::substep_implicit(const SpringModel& model, const Environment& env, 
   const std::size_t n = model.num_particles();
   compute_body_forces(model, env, state, f_);
   system_.assemble(model, state, f_, h, b_);
-  for (std::size_t i = 0; i < n; ++i)
-    if (model.inv_mass[i] == 0) dv_[i].setZero();
+  // The warm start: dv extrapolated linearly from the last two steps
+  // (fewer iterations, and a smaller error at the same tolerance, than the
+  // last dv alone).
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 last = dv_[i];
+    dv_[i] = model.inv_mass[i] == 0 ? Vec3::Zero() : Vec3(2.0 * last - dv_last_[i]);
+    dv_last_[i] = last;
+  }
 
-  // Preconditioned CG on A dv = b, warm-started from the previous dv.
+  // Preconditioned CG on A dv = b.
   // The scale the residual is measured against: the right-hand side, but
   // never less than the impulse of the body's weight over the step (near
   // equilibrium b tends to 0 and a purely relative test would chase

@@ -10,8 +10,8 @@
 //  - implicit Euler (Baraff & Witkin 1998): one Newton step of the backward
 //    Euler equations, (M - h D - h^2 K) dv = h (f + h K v), solved by a
 //    matrix-free preconditioned conjugate gradient (sim/spring_system.h:
-//    symmetric block Gauss-Seidel by default, block Jacobi on request),
-//    warm-started from the previous step's dv. The spring Jacobian drops the
+//    block SSOR by default, block Jacobi on request), warm-started from the
+//    last two steps' dv extrapolated. The spring Jacobian drops the
 //    negative part of its transverse term (compressed springs) so the system
 //    stays SPD. Nothing is factorized, so a cut or an LOD change costs no stall.
 // Buffers are allocated when the model's size changes, never per step.
@@ -55,7 +55,10 @@ class Stepper {
 
   std::uint64_t refused_steps() const { return refused_steps_; }
   // Forgets the warm start (call when particles are renumbered).
-  void reset_warm_start() { dv_.clear(); }
+  void reset_warm_start() {
+    dv_.clear();
+    dv_last_.clear();
+  }
 
  private:
   void substep_symplectic(const SpringModel& model, const Environment& env, SpringState& state, double h);
@@ -65,8 +68,9 @@ class Stepper {
   void resize(const SpringModel& model);
 
   std::uint64_t refused_steps_ = 0;
-  // Scratch (n_particles): forces, saved state, the implicit step's dv and right-hand side.
-  std::vector<Vec3> f_, saved_x_, saved_v_, dv_, b_;
+  // Scratch (n_particles): forces, saved state, the implicit step's dv, the
+  // one before (the warm start extrapolates them) and right-hand side.
+  std::vector<Vec3> f_, saved_x_, saved_v_, dv_, dv_last_, b_;
   SpringSystem system_;  // the implicit step's linear system and its solvers
 };
 
