@@ -1,6 +1,7 @@
 #include "sim/forces.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
@@ -34,18 +35,37 @@ void compute_forces(const SpringModel& model, const Environment& env, const Spri
   const std::size_t n = model.num_particles();
   f.resize(n);
   for (std::size_t i = 0; i < n; ++i) f[i] = model.mass[i] * (env.gravity - model.mass_damping * state.v[i]);
+  // A run of springs with the same first particle a (all of a's, as
+  // build_spring_model sorts them) sums a's force in registers, not through
+  // memory spring after spring.
   const std::size_t m = model.num_springs();
-  for (std::size_t s = 0; s < m; ++s) {
-    const auto a = model.spring_a[s], b = model.spring_b[s];
-    const Vec3 d = state.x[b] - state.x[a];
-    const double length = d.norm();
-    if (length <= 0) continue;
-    const Vec3 dir = d / length;
-    const double magnitude = model.stiffness[s] * (length - model.rest_length[s]) +
-                             model.damping[s] * dir.dot(state.v[b] - state.v[a]);
-    f[a] += magnitude * dir;
-    f[b] -= magnitude * dir;
+  const std::int32_t *spring_a = model.spring_a.data(), *spring_b = model.spring_b.data();
+  const Vec3 *x = state.x.data(), *v = state.v.data();
+  for (std::size_t s = 0; s < m;) {
+    const auto a = spring_a[s];
+    const Vec3 xa = x[a], va = v[a];
+    Vec3 fa = Vec3::Zero();
+    for (; s < m && spring_a[s] == a; ++s) {
+      const auto b = spring_b[s];
+      const Vec3 d = x[b] - xa;
+      const double length = d.norm();
+      if (length <= 0) continue;
+      const Vec3 dir = d / length;
+      const double magnitude =
+          model.stiffness[s] * (length - model.rest_length[s]) + model.damping[s] * dir.dot(v[b] - va);
+      fa += magnitude * dir;
+      f[b] -= magnitude * dir;
+    }
+    f[a] += fa;
   }
+  if (!model.tet_particles.empty()) add_volume_forces(model, state, f);
+}
+
+void compute_body_forces(const SpringModel& model, const Environment& env, const SpringState& state,
+                         std::vector<Vec3>& f) {
+  const std::size_t n = model.num_particles();
+  f.resize(n);
+  for (std::size_t i = 0; i < n; ++i) f[i] = model.mass[i] * (env.gravity - model.mass_damping * state.v[i]);
   if (!model.tet_particles.empty()) add_volume_forces(model, state, f);
 }
 

@@ -15,6 +15,11 @@ namespace mtcut::sim {
 void compute_forces(const SpringModel& model, const Environment& env, const SpringState& state,
                     std::vector<Vec3>& f);
 
+// f = gravity + air drag + volume terms: every force but the springs'.
+// `f` is resized to n_particles and overwritten.
+void compute_body_forces(const SpringModel& model, const Environment& env, const SpringState& state,
+                         std::vector<Vec3>& f);
+
 // Kinetic + elastic (springs and volume terms) + gravitational potential.
 double total_energy(const SpringModel& model, const Environment& env, const SpringState& state);
 

@@ -39,7 +39,8 @@ struct SpringModel {
   std::vector<double> inv_mass;         // 1 / mass; 0 for a fixed particle
   std::vector<Vec3> rest_position;      // rest positions, m
 
-  // --- springs (n_springs), one per distinct tet edge
+  // --- springs (n_springs), one per distinct tet edge, sorted by (a, b):
+  // the implicit solver's Gauss-Seidel sweeps walk them grouped by a
   std::vector<std::int32_t> spring_a;   // particle index, a < b
   std::vector<std::int32_t> spring_b;
   std::vector<double> rest_length;      // m

@@ -9,19 +9,20 @@
 //    for dt below ~ sqrt(m / k) of the stiffest spring;
 //  - implicit Euler (Baraff & Witkin 1998): one Newton step of the backward
 //    Euler equations, (M - h D - h^2 K) dv = h (f + h K v), solved by a
-//    matrix-free conjugate gradient, preconditioned by the exact 3x3 diagonal
-//    blocks of the system, and warm-started from the previous step's dv. The spring Jacobian drops the negative part of
-//    its transverse term (compressed springs) so the system stays SPD.
-//    Nothing is factorized, so a cut or an LOD change costs no stall.
+//    matrix-free preconditioned conjugate gradient (sim/spring_system.h:
+//    block SSOR by default, block Jacobi on request), warm-started from the
+//    last two steps' dv extrapolated. The spring Jacobian drops the
+//    negative part of its transverse term (compressed springs) so the system
+//    stays SPD. Nothing is factorized, so a cut or an LOD change costs no stall.
 // Buffers are allocated when the model's size changes, never per step.
 
-#include <Eigen/Dense>
 #include <cstdint>
 #include <vector>
 
 #include "sim/environment.h"
 #include "sim/spring_model.h"
 #include "sim/spring_state.h"
+#include "sim/spring_system.h"
 
 namespace mtcut::sim {
 
@@ -36,6 +37,7 @@ struct IntegratorDef {
   // correction; it damps rather than destabilises).
   double cg_tolerance = 1e-3;
   int cg_max_iterations = 100;
+  PreconditionerKind preconditioner = PreconditionerKind::kSymmetricGaussSeidel;
   double max_speed = 100.0;      // m/s; a faster particle means the state exploded
 };
 
@@ -53,25 +55,23 @@ class Stepper {
 
   std::uint64_t refused_steps() const { return refused_steps_; }
   // Forgets the warm start (call when particles are renumbered).
-  void reset_warm_start() { dv_.clear(); }
+  void reset_warm_start() {
+    dv_.clear();
+    dv_last_.clear();
+  }
 
  private:
   void substep_symplectic(const SpringModel& model, const Environment& env, SpringState& state, double h);
   // Returns CG iterations; writes the final relative residual.
   int substep_implicit(const SpringModel& model, const Environment& env, const IntegratorDef& def,
                        SpringState& state, double h, double& residual);
-  // out = A u; returns u . A u.
-  double multiply_system(const SpringModel& model, const std::vector<Vec3>& u, std::vector<Vec3>& out) const;
   void resize(const SpringModel& model);
 
   std::uint64_t refused_steps_ = 0;
-  // Scratch (n_particles): forces, saved state, CG vectors, diagonal preconditioner.
-  std::vector<Vec3> f_, saved_x_, saved_v_, dv_, r_, z_, p_, ap_;
-  std::vector<double> diag_mass_;                  // m (1 + h alpha)
-  std::vector<Eigen::Matrix3d> block_inverse_;     // inverse 3x3 diagonal blocks of A
-  // Scratch (n_springs): the spring's block B_s = along n n^T + across I.
-  std::vector<Vec3> dir_;
-  std::vector<double> along_, across_;
+  // Scratch (n_particles): forces, saved state, the implicit step's dv, the
+  // one before (the warm start extrapolates them) and right-hand side.
+  std::vector<Vec3> f_, saved_x_, saved_v_, dv_, dv_last_, b_;
+  SpringSystem system_;  // the implicit step's linear system and its solvers
 };
 
 // Pins fixed particles, then pushes particles out of the floor and the tool,

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <numeric>
 #include <random>
 
 #include "engine/mesh_loader.h"
@@ -10,6 +11,7 @@
 #include "engine/mt/mt_builder.h"
 #include "sim/fixed_region.h"
 #include "sim/forces.h"
+#include "sim/spring_system.h"
 
 namespace mtcut::sim {
 namespace {
@@ -183,6 +185,127 @@ TEST(StepperBar, HangingBarSettlesAlikeAtTheCoarsestAndFinestFrontier) {
   EXPECT_LT(fine, 0.01);
   EXPECT_LT(std::abs(coarse - fine), 0.2 * fine) << "coarse " << coarse << " (" << coarsest.tets().size()
                                                  << " tets), fine " << fine << " (" << finest.tets().size() << " tets)";
+}
+
+// A jittered, moving state of a stiff box with its x = +0.05 face fixed, and
+// its implicit system at dt = 1/60.
+struct SystemCase {
+  SpringModel model;
+  SpringState state;
+  SpringSystem system;
+  std::vector<Vec3> b;
+};
+
+SystemCase system_case(bool shuffle_springs) {
+  const engine::TetMesh mesh = box_mesh(400, Vec3(0.1, 0.05, 0.05));
+  FixedRegion fixed;
+  fixed.kind = FixedRegion::Kind::kHalfSpace;
+  fixed.normal = Vec3(-1, 0, 0);
+  fixed.offset = -(0.05 - 1e-9);
+  SystemCase c;
+  c.model = build_spring_model(mesh.tets, mesh.positions, stiff_material(),
+                               [&](VertId v) { return fixed.contains(v, mesh.position(v)); });
+  if (shuffle_springs) {  // a hand-built order: not grouped by first particle
+    std::vector<std::size_t> order(c.model.num_springs());
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), std::mt19937(5));
+    const SpringModel m = c.model;
+    for (std::size_t s = 0; s < order.size(); ++s) {
+      c.model.spring_a[s] = m.spring_a[order[s]];
+      c.model.spring_b[s] = m.spring_b[order[s]];
+      c.model.rest_length[s] = m.rest_length[order[s]];
+      c.model.stiffness[s] = m.stiffness[order[s]];
+      c.model.damping[s] = m.damping[order[s]];
+    }
+  }
+  EXPECT_TRUE(c.model.validate().ok());
+  EXPECT_GT(c.model.num_fixed(), 0u);
+  c.state = rest_state(c.model);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> jitter(-0.003, 0.003), speed(-0.2, 0.2);
+  for (std::size_t i = 0; i < c.model.num_particles(); ++i) {
+    if (c.model.inv_mass[i] == 0) continue;
+    c.state.x[i] += Vec3(jitter(rng), jitter(rng), jitter(rng));
+    c.state.v[i] = Vec3(speed(rng), speed(rng), speed(rng));
+  }
+  std::vector<Vec3> f;
+  compute_body_forces(c.model, Environment{}, c.state, f);
+  c.b.resize(c.model.num_particles());
+  c.system.assemble(c.model, c.state, f, kDt, c.b);
+  return c;
+}
+
+double norm2(const std::vector<Vec3>& u) {
+  double sum = 0;
+  for (const auto& x : u) sum += x.squaredNorm();
+  return sum;
+}
+
+TEST(SpringSystem, IsSymmetricPositiveDefiniteWithFixedRowsDecoupled) {
+  SystemCase c = system_case(false);
+  const std::size_t n = c.model.num_particles();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Sym3& d = c.system.diagonal()[i];
+    Eigen::Matrix3d m;
+    m << d.xx, d.xy, d.xz, d.xy, d.yy, d.yz, d.xz, d.yz, d.zz;
+    EXPECT_EQ(Eigen::LLT<Eigen::Matrix3d>(m).info(), Eigen::Success) << "diagonal block " << i;
+  }
+  std::mt19937 rng(9);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<Vec3> u(n), w(n), au(n), aw(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool fixed = c.model.inv_mass[i] == 0;
+    u[i] = fixed ? Vec3::Zero() : Vec3(g(rng), g(rng), g(rng));
+    w[i] = fixed ? Vec3::Zero() : Vec3(g(rng), g(rng), g(rng));
+  }
+  c.system.multiply(u, au);
+  c.system.multiply(w, aw);
+  double uau = 0, wau = 0, uaw = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    uau += u[i].dot(au[i]);
+    wau += w[i].dot(au[i]);
+    uaw += u[i].dot(aw[i]);
+    if (c.model.inv_mass[i] == 0) {
+      EXPECT_EQ(au[i], Vec3::Zero()) << "fixed row " << i;
+    }
+  }
+  EXPECT_GT(uau, 0.0);
+  EXPECT_NEAR(wau, uaw, 1e-12 * std::sqrt(norm2(au) * norm2(w)));
+}
+
+// Block SSOR, block Jacobi, and SSOR's fallback on springs not grouped by
+// first particle all solve the same system to the same dv.
+TEST(SpringSystem, PreconditionersConvergeToTheSameDv) {
+  std::vector<std::vector<Vec3>> solutions;
+  std::vector<int> iterations;
+  for (const bool shuffle : {false, true}) {
+    for (const auto kind : {PreconditionerKind::kSymmetricGaussSeidel, PreconditionerKind::kBlockJacobi}) {
+      SystemCase c = system_case(shuffle);
+      EXPECT_EQ(c.system.rows_sorted(), !shuffle);
+      std::vector<Vec3> dv(c.model.num_particles(), Vec3::Zero()), adv(dv.size());
+      const double tolerance2 = 1e-24 * norm2(c.b);
+      const CgStats stats = c.system.solve(kind, c.b, tolerance2, 1000, dv);
+      EXPECT_LE(stats.residual2, tolerance2);
+      // The reported residual is the true one.
+      c.system.multiply(dv, adv);
+      double rr = 0;
+      for (std::size_t i = 0; i < dv.size(); ++i) rr += (c.b[i] - adv[i]).squaredNorm();
+      EXPECT_LT(rr, 4 * tolerance2 + 1e-30);
+      for (std::size_t i = 0; i < dv.size(); ++i)
+        if (c.model.inv_mass[i] == 0) {
+          EXPECT_EQ(dv[i], Vec3::Zero());
+        }
+      if (!shuffle) solutions.push_back(dv);
+      iterations.push_back(stats.iterations);
+    }
+  }
+  ASSERT_EQ(solutions.size(), 2u);
+  double diff = 0;
+  for (std::size_t i = 0; i < solutions[0].size(); ++i) diff += (solutions[0][i] - solutions[1][i]).squaredNorm();
+  EXPECT_LT(std::sqrt(diff), 1e-9 * std::sqrt(norm2(solutions[1])));
+  // SSOR needs well under Jacobi's iterations; the fallback is Jacobi.
+  EXPECT_LT(iterations[0] * 3, iterations[1] * 2) << iterations[0] << " vs " << iterations[1];
+  EXPECT_EQ(iterations[2], iterations[3]);
 }
 
 TEST(StepperGuard, NanIsRefusedAndTheStateRestored) {

@@ -1,0 +1,282 @@
+#include "sim/spring_system.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mtcut::sim {
+namespace {
+
+constexpr double kTinyLength2 = 1e-300;  // m^2, below any real spring's
+
+void add_block(Sym3& d, const SpringBlock& blk) {
+  const Vec3& w = blk.w;
+  d.xx += w.x() * w.x() + blk.across;
+  d.xy += w.x() * w.y();
+  d.xz += w.x() * w.z();
+  d.yy += w.y() * w.y() + blk.across;
+  d.yz += w.y() * w.z();
+  d.zz += w.z() * w.z() + blk.across;
+}
+
+void add_sym(Sym3& d, const Sym3& e) {
+  d.xx += e.xx;
+  d.xy += e.xy;
+  d.xz += e.xz;
+  d.yy += e.yy;
+  d.yz += e.yz;
+  d.zz += e.zz;
+}
+
+}  // namespace
+
+Sym3 Sym3::inverse() const {
+  const double cxx = yy * zz - yz * yz, cxy = xz * yz - xy * zz, cxz = xy * yz - xz * yy;
+  const double cyy = xx * zz - xz * xz, cyz = xy * xz - xx * yz, czz = xx * yy - xy * xy;
+  const double inv_det = 1.0 / (xx * cxx + xy * cxy + xz * cxz);
+  return {cxx * inv_det, cxy * inv_det, cxz * inv_det, cyy * inv_det, cyz * inv_det, czz * inv_det};
+}
+
+void SpringSystem::resize(std::size_t n, std::size_t m) {
+  blocks_.resize(m);
+  row_.resize(n + 1);
+  for (auto* v : {&own_, &diag_, &diag_inverse_}) v->resize(n);
+  for (auto* v : {&r_, &rhat_, &z_, &p_, &t_, &ut_, &q_, &acc_}) v->resize(n);
+}
+
+// b = h (f0 + h K v0), K v0 = -sum_s J_s (v_a - v_b), J_s = k (n n^T + t (I - n n^T)).
+// Spring s adds g_s to b_a and -g_s to b_b: its force (Hooke + dashpot, as
+// compute_forces) times h, minus h^2 J_s (v_a - v_b).
+void SpringSystem::assemble(const SpringModel& model, const SpringState& state, const std::vector<Vec3>& f, double h,
+                            std::vector<Vec3>& b) {
+  const std::size_t n = model.num_particles(), m = model.num_springs();
+  resize(n, m);
+  spring_a_ = model.spring_a.data();
+  spring_b_ = model.spring_b.data();
+  const double h2 = h * h;
+
+  const double mass_factor = 1.0 + h * model.mass_damping;
+  const double* inv_mass = model.inv_mass.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    own_[i] = Sym3::scaled_identity(model.mass[i] * mass_factor);
+    diag_[i] = own_[i];
+    b[i] = h * f[i];
+  }
+
+  // One pass over the springs: B_s into the diagonal blocks, g_s into b;
+  // springs at fixed particles masked; each particle's first spring found.
+  // A run of springs with the same first particle a sums its share of a's
+  // diagonal block and b in registers (not through memory, spring after
+  // spring: a chain of stores and reloads).
+  const Vec3 *x = state.x.data(), *v = state.v.data();
+  const double *rest = model.rest_length.data(), *stiffness = model.stiffness.data(), *damping = model.damping.data();
+  SpringBlock* blocks = blocks_.data();
+  rows_sorted_ = true;
+  std::size_t row = 0;  // the next particle whose springs have not begun
+  for (std::size_t s = 0; s < m;) {
+    const auto a = spring_a_[s];
+    if (static_cast<std::size_t>(a) + 1 < row) rows_sorted_ = false;
+    while (row <= static_cast<std::size_t>(a)) row_[row++] = static_cast<std::int32_t>(s);
+    const Vec3 xa = x[a], va = v[a];
+    const bool a_fixed = inv_mass[a] == 0;
+    Sym3 diag_a{};
+    Vec3 b_a = Vec3::Zero();
+    for (; s < m && spring_a_[s] == a; ++s) {
+      const auto c = spring_b_[s];
+      const Vec3 d = x[c] - xa;
+      // Branch-free (a branch on the sign of t, which flips spring to
+      // spring, mispredicts half the time and stalls the pipeline):
+      // + kTinyLength2 is exact for any real spring, and a zero-length one
+      // gets dir = 0 and adds nothing; t = max(0, u) = (u + |u|) / 2 exactly.
+      const double inv_length = 1.0 / std::sqrt(d.squaredNorm() + kTinyLength2);
+      const Vec3 dir = d * inv_length;
+      const double k = stiffness[s];
+      const double u = 1.0 - rest[s] * inv_length;
+      const double t = 0.5 * (u + std::abs(u));
+      const double along = h * damping[s] + h2 * k * (1.0 - t), across = h2 * k * t;
+      const Vec3 dv0 = va - v[c];
+      const double dn = dir.dot(dv0);
+      // g_s = h f_a = h (k (l - L) - c n . dv0) n, l = |d|^2 / |d|, minus h^2 J_s dv0.
+      const Vec3 g = (h * k * (d.squaredNorm() * inv_length - rest[s]) - along * dn) * dir - across * dv0;
+      b_a += g;
+      b[c] -= g;
+      SpringBlock blk{std::sqrt(along) * dir, across};
+      add_block(diag_a, blk);
+      add_block(diag_[c], blk);
+      if (a_fixed || inv_mass[c] == 0) {  // masked: fixed rows decouple
+        if (!a_fixed) add_block(own_[a], blk);
+        if (inv_mass[c] != 0) add_block(own_[c], blk);
+        blk = SpringBlock{};
+      }
+      blocks[s] = blk;
+    }
+    b[a] += b_a;
+    add_sym(diag_[a], diag_a);
+  }
+  while (row <= n) row_[row++] = static_cast<std::int32_t>(m);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (inv_mass[i] == 0) {
+      b[i].setZero();
+      diag_inverse_[i] = Sym3{};
+    } else {
+      diag_inverse_[i] = diag_[i].inverse();
+    }
+  }
+}
+
+void SpringSystem::multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out) const {
+  const std::size_t n = own_.size(), m = blocks_.size();
+  for (std::size_t i = 0; i < n; ++i) out[i] = own_[i] * u[i];
+  for (std::size_t s = 0; s < m;) {  // runs of springs with the same first particle, as in assemble
+    const auto a = spring_a_[s];
+    const Vec3 ua = u[a];
+    Vec3 out_a = Vec3::Zero();
+    for (; s < m && spring_a_[s] == a; ++s) {
+      const auto c = spring_b_[s];
+      const Vec3 t = blocks_[s] * (ua - u[c]);
+      out_a += t;
+      out[c] -= t;
+    }
+    out[a] += out_a;
+  }
+}
+
+CgStats SpringSystem::solve(PreconditionerKind kind, const std::vector<Vec3>& b, double tolerance2,
+                            int max_iterations, std::vector<Vec3>& x) {
+  if (kind == PreconditionerKind::kSymmetricGaussSeidel && rows_sorted_)
+    return solve_gauss_seidel(b, tolerance2, max_iterations, x);
+  return solve_block_jacobi(b, tolerance2, max_iterations, x);
+}
+
+CgStats SpringSystem::solve_block_jacobi(const std::vector<Vec3>& b, double tolerance2, int max_iterations,
+                                         std::vector<Vec3>& x) {
+  const std::size_t n = own_.size();
+  std::vector<Vec3>& ap = q_;
+  multiply(x, ap);
+  double rz = 0, rr = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    r_[i] = b[i] - ap[i];
+    z_[i] = diag_inverse_[i] * r_[i];
+    p_[i] = z_[i];
+    rz += r_[i].dot(z_[i]);
+    rr += r_[i].squaredNorm();
+  }
+  CgStats stats;
+  while (rr > tolerance2 && stats.iterations < max_iterations) {
+    multiply(p_, ap);
+    double pap = 0;
+    for (std::size_t i = 0; i < n; ++i) pap += p_[i].dot(ap[i]);
+    if (!(pap > 0)) break;  // converged to round-off
+    const double alpha = rz / pap;
+    double rz_next = 0;
+    rr = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] += alpha * p_[i];
+      r_[i] -= alpha * ap[i];
+      z_[i] = diag_inverse_[i] * r_[i];
+      rz_next += r_[i].dot(z_[i]);
+      rr += r_[i].squaredNorm();
+    }
+    const double beta = rz_next / rz;
+    rz = rz_next;
+    for (std::size_t i = 0; i < n; ++i) p_[i] = z_[i] + beta * p_[i];
+    ++stats.iterations;
+  }
+  stats.residual2 = rr;
+  return stats;
+}
+
+// SSOR with relaxation w: W = D / w + L, A = W + W^T - (2 / w - 1) D.
+// CG on Ahat xhat = W^-1 b, Ahat = W^-1 A W^-T, preconditioned by D (z =
+// D rhat): PCG on A with M ~ W D^-1 W^T. Eisenstat: with t = W^-T p (backward
+// sweep), Ahat p = t + W^-1 (p - (2 / w - 1) D t) (forward sweep), and
+// x = W^-T xhat moves by alpha t. Off-diagonal blocks are -B_s, so with
+// sum_i = sum B_s t_b over i's springs, t_i = w D_i^-1 (p_i + sum_i) and
+// (p - (2 / w - 1) D t)_i = (w - 1) p_i - (2 - w) sum_i.
+//
+// The true residual r = W rhat = D rhat / w + L rhat costs a sweep, so it is
+// computed only when rhat . D rhat, scaled by the ratio |r|^2 / rhat . D rhat
+// at the last check, predicts convergence.
+CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tolerance2, int max_iterations,
+                                         std::vector<Vec3>& x_vec) {
+  const std::size_t n = own_.size();
+  const SpringBlock* blk = blocks_.data();
+  const std::int32_t* row = row_.data();
+  const std::int32_t* other = spring_b_;
+  const Sym3* diag = diag_.data();
+  const Sym3* dinv = diag_inverse_.data();
+  Vec3 *x = x_vec.data(), *rhat = rhat_.data(), *z = z_.data(), *p = p_.data(), *t = t_.data(), *ut = ut_.data(),
+       *q = q_.data(), *acc = acc_.data();
+
+  // The true residual |W rhat|^2; leaves acc at 0.
+  const auto true_residual2 = [&] {
+    double rr = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 r = z[i] * (1 / kRelaxation) - acc[i];
+      acc[i].setZero();
+      rr += r.squaredNorm();
+      for (std::int32_t s = row[i]; s < row[i + 1]; ++s) acc[other[s]] += blk[s] * rhat[i];
+    }
+    return rr;
+  };
+
+  multiply(x_vec, q_);
+  double rr = 0, rz = 0;
+  std::fill(acc_.begin(), acc_.end(), Vec3::Zero());
+  for (std::size_t i = 0; i < n; ++i) {  // rhat = W^-1 r, r = b - A x
+    const Vec3 r = b[i] - q[i];
+    rr += r.squaredNorm();
+    rhat[i] = dinv[i] * (kRelaxation * (r + acc[i]));
+    acc[i].setZero();
+    for (std::int32_t s = row[i]; s < row[i + 1]; ++s) acc[other[s]] += blk[s] * rhat[i];
+    z[i] = diag[i] * rhat[i];
+    p[i] = z[i];
+    rz += rhat[i].dot(z[i]);
+  }
+  double ratio = rz > 0 ? rr / rz : 1.0;  // |r|^2 / rhat . D rhat at the last check
+  bool rr_current = true;
+  CgStats stats;
+  double beta = 0;
+  while (stats.iterations < max_iterations) {
+    if (ratio * rz <= tolerance2) {
+      if (!rr_current) {
+        rr = true_residual2();
+        ratio = rz > 0 ? rr / rz : 1.0;
+        rr_current = true;
+      }
+      if (rr <= tolerance2) break;
+    }
+    for (std::size_t i = n; i-- > 0;) {  // p = z + beta p; t = W^-T p
+      Vec3 sum = Vec3::Zero();
+      for (std::int32_t s = row[i]; s < row[i + 1]; ++s) sum += blk[s] * t[other[s]];
+      ut[i] = sum;
+      p[i] = z[i] + beta * p[i];
+      t[i] = dinv[i] * (kRelaxation * (p[i] + sum));
+    }
+    double pq = 0;
+    for (std::size_t i = 0; i < n; ++i) {  // q = Ahat p = t + W^-1 (p - (2 / w - 1) D t)
+      const Vec3 s_i = dinv[i] * (kRelaxation * (acc[i] + (kRelaxation - 1) * p[i] - (2 - kRelaxation) * ut[i]));
+      acc[i].setZero();
+      q[i] = t[i] + s_i;
+      pq += p[i].dot(q[i]);
+      for (std::int32_t s = row[i]; s < row[i + 1]; ++s) acc[other[s]] += blk[s] * s_i;
+    }
+    if (!(pq > 0)) break;  // converged to round-off
+    const double alpha = rz / pq;
+    double rz_next = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] += alpha * t[i];
+      rhat[i] -= alpha * q[i];
+      z[i] = diag[i] * rhat[i];
+      rz_next += rhat[i].dot(z[i]);
+    }
+    beta = rz_next / rz;
+    rz = rz_next;
+    rr_current = false;
+    ++stats.iterations;
+  }
+  if (!rr_current) rr = true_residual2();
+  stats.residual2 = rr;
+  return stats;
+}
+
+}  // namespace mtcut::sim
