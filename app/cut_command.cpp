@@ -4,6 +4,7 @@
 
 #include "app/json_report.h"
 #include "app/mesh_command.h"
+#include "app/mesh_input_options.h"
 #include "cut/cut_polygon.h"
 #include "cut/split_table.h"
 #include "engine/input_error.h"
@@ -29,10 +30,7 @@ void run_cut(CutOptions& options) {
   options.cutter.scheme = *scheme;
   // The polygon first: a typo in it should not wait for the meshing.
   const cut::CutPolygon polygon = cut::parse_cut_polygon(options.polygon, "--polygon");
-  if (!options.size.empty()) {
-    if (options.size.size() != 3) throw engine::InputError("--size: give three extents x,y,z");
-    options.load.builtin_size = engine::Vec3(options.size[0], options.size[1], options.size[2]);
-  }
+  apply_builtin_size(options.size, options.load);
   engine::LoadedMesh loaded = engine::load_mesh(options.input, options.load);
   if (const auto report = loaded.mesh.validate(); !report.ok())
     throw engine::InputError(options.input + ": invalid tet mesh: " + report.problems.front());
@@ -55,11 +53,7 @@ void run_cut(CutOptions& options) {
   out["tets"] = loaded.mesh.num_tets();
   out["vertices"] = loaded.mesh.num_vertices();
   if (!options.output.empty()) out["output"] = options.output;
-  if (options.json) {
-    std::cout << out.dump() << "\n";
-  } else {
-    print_human(std::cout, out);
-  }
+  print_report(std::cout, out, options.json);
 }
 
 }  // namespace
@@ -104,12 +98,7 @@ void register_cut_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 0.45));
   cmd->add_option("-o,--output", options->output,
                   "write the cut mesh: .vtu (with quality), .node/.ele, or its boundary as .obj/.off/.stl/.ply");
-  cmd->add_option("--tets", options->load.builtin_tets, "target tet count of a builtin shape")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--size", options->size, "extents x,y,z of a builtin shape in metres")->delimiter(',');
-  cmd->add_option("--max-volume", options->load.meshing.max_volume, "largest tet volume when meshing a surface")
-      ->check(CLI::NonNegativeNumber);
+  add_mesh_input_options(*cmd, options->load, options->size);
   cmd->add_flag("--json", options->json, "print one JSON object");
   cmd->callback([options] { run_cut(*options); });
 }

@@ -29,4 +29,12 @@ void print_human(std::ostream& out, const nlohmann::ordered_json& report) {
   }
 }
 
+void print_report(std::ostream& out, const nlohmann::ordered_json& report, bool json) {
+  if (json) {
+    out << report.dump() << "\n";
+  } else {
+    print_human(out, report);
+  }
+}
+
 }  // namespace mtcut::app

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "app/json_report.h"
+#include "app/mesh_input_options.h"
 #include "engine/input_error.h"
 #include "engine/io/mesh_file.h"
 #include "engine/mesh_loader.h"
@@ -28,10 +29,7 @@ std::string lower_extension(const std::string& path) {
 }
 
 void run_mesh(MeshOptions& options) {
-  if (!options.size.empty()) {
-    if (options.size.size() != 3) throw engine::InputError("--size: give three extents x,y,z");
-    options.load.builtin_size = engine::Vec3(options.size[0], options.size[1], options.size[2]);
-  }
+  apply_builtin_size(options.size, options.load);
   const auto start = std::chrono::steady_clock::now();
   const engine::LoadedMesh loaded = engine::load_mesh(options.input, options.load);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -44,11 +42,7 @@ void run_mesh(MeshOptions& options) {
   out.update(to_json(engine::compute_stats(loaded.mesh)));
   out["seconds"] = seconds;
   if (!options.output.empty()) out["output"] = options.output;
-  if (options.json) {
-    std::cout << out.dump() << "\n";
-  } else {
-    print_human(std::cout, out);
-  }
+  print_report(std::cout, out, options.json);
 }
 
 }  // namespace
@@ -81,8 +75,6 @@ void register_mesh_command(CLI::App& app) {
       ->required();
   cmd->add_option("-o,--output", options->output,
                   "write the mesh: .vtu (with quality), .node/.ele, or its boundary as .obj/.off/.stl/.ply");
-  cmd->add_option("--max-volume", options->load.meshing.max_volume, "largest tet volume when meshing (0 = none)")
-      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--quality", options->load.meshing.radius_edge_ratio,
                   "TetGen radius-edge ratio bound when meshing (0 = no quality refinement)")
       ->capture_default_str()
@@ -90,10 +82,7 @@ void register_mesh_command(CLI::App& app) {
   cmd->add_option("--min-dihedral", options->load.meshing.min_dihedral_deg, "dihedral angle (degrees) TetGen aims for")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 30.0));
-  cmd->add_option("--tets", options->load.builtin_tets, "target tet count of a builtin shape")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--size", options->size, "extents x,y,z of a builtin shape in metres")->delimiter(',');
+  add_mesh_input_options(*cmd, options->load, options->size);
   cmd->add_flag("--json", options->json, "print the statistics as one JSON object");
   cmd->add_flag("--verbose", options->load.meshing.verbose, "show TetGen's own output");
   cmd->callback([options] { run_mesh(*options); });

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/json_report.h"
+#include "app/mesh_input_options.h"
 #include "engine/input_error.h"
 #include "engine/mesh_loader.h"
 #include "engine/mt/frontier.h"
@@ -39,10 +40,7 @@ void run_mt(MtOptions& options) {
     options.build = preset.build;
   }
   if (spec.empty()) throw engine::InputError("give a mesh (builtin:NAME or a file) or --preset");
-  if (!options.size.empty()) {
-    if (options.size.size() != 3) throw engine::InputError("--size: give three extents x,y,z");
-    options.load.builtin_size = engine::Vec3(options.size[0], options.size[1], options.size[2]);
-  }
+  apply_builtin_size(options.size, options.load);
   if (options.no_preserve_boundary) options.build.preserve_boundary = false;
 
   const BuiltMt built = build_mt_from(spec, options.load, options.build);
@@ -70,11 +68,7 @@ void run_mt(MtOptions& options) {
     out["validate_seconds"] = seconds_since(start);
     if (!report.ok()) out["problems"] = report.problems;
   }
-  if (options.json) {
-    std::cout << out.dump() << "\n";
-  } else {
-    print_human(std::cout, out);
-  }
+  print_report(std::cout, out, options.json);
   if (out.contains("valid") && !out["valid"].get<bool>())
     throw engine::InputError(spec + ": the MT built is not valid (an internal error; please report it)");
 }
@@ -125,12 +119,7 @@ void register_mt_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-preserve-boundary", options->no_preserve_boundary,
                 "let collapses move the surface (by at most their error)");
-  cmd->add_option("--tets", options->load.builtin_tets, "target tet count of a builtin shape")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--size", options->size, "extents x,y,z of a builtin shape in metres")->delimiter(',');
-  cmd->add_option("--max-volume", options->load.meshing.max_volume, "largest tet volume when meshing a surface")
-      ->check(CLI::NonNegativeNumber);
+  add_mesh_input_options(*cmd, options->load, options->size);
   cmd->add_flag("--no-validate", options->skip_validation, "skip MT::validate() (large meshes)");
   cmd->add_flag("--json", options->json, "print one JSON object");
   cmd->callback([options] { run_mt(*options); });
