@@ -44,10 +44,19 @@ inline constexpr int kLabelCount = 128;
 
 // The split of one tet configuration: tets over local labels, each
 // positively oriented when the tet (0, 1, 2, 3) is.
+// The boundary mask of one recipe tet (a piece) for each boundary mask of
+// the split tet (recipe_faces.h): a piece face inside a face of the split
+// tet is surface exactly when that face is; a face of the cut surface
+// always is.
+struct PieceFaces {
+  std::array<std::uint8_t, 16> mask_for{};  // [split tet's mask] -> piece's mask
+};
+
 struct SplitRecipe {
   CutCase kind = CutCase::kA;
   std::vector<std::array<Label, 4>> tets;
   std::vector<Label> centre_of;  // 1:17: the centre is the centroid of these (unsided) points
+  std::vector<PieceFaces> faces;  // (tets) filled by make_recipe once the tets are oriented
 };
 
 }  // namespace mtcut::cut

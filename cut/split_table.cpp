@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cut/recipe_faces.h"
 #include "cut/split_bielser17.h"
 #include "cut/split_lut.h"
 #include "cut/split_realisation.h"
@@ -67,6 +68,7 @@ SplitRecipe make_recipe(const TetConfig& config, SplitScheme scheme) {
   SplitRecipe recipe =
       scheme == SplitScheme::kLut ? generate_lut_split(config) : generate_bielser17_split(config);
   orient_recipe(config, trace, recipe);
+  recipe.faces = recipe_piece_faces(recipe);
   return recipe;
 }
 

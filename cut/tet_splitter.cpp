@@ -121,35 +121,6 @@ PointSource point_source(const Tet& tet, Label label, const CutClassifier& class
   return s;
 }
 
-std::optional<KeyedSplit> split_tet_keyed(const Tet& tet, const CutClassifier& classifier, SplitTable& table) {
-  const TetConfig config = classifier.configure(tet);
-  if (!config.is_cut()) return std::nullopt;
-  const SplitRecipe& recipe = table.recipe(config);
-  KeyedSplit out;
-  out.kind = recipe.kind;
-  out.tets.reserve(recipe.tets.size());
-  // Each new point's key once (a label is a corner of several recipe tets):
-  // slot[l] is 1 + its index in out.points, 0 before it is met.
-  std::array<std::uint8_t, kLabelCount> slot{};
-  for (const auto& t : recipe.tets) {
-    std::array<PointKey, 4> keyed;
-    for (int j = 0; j < 4; ++j) {
-      const Label l = t[j];
-      if (slot[l] != 0) {
-        keyed[j] = out.points[slot[l] - 1u];
-        continue;
-      }
-      keyed[j] = point_key(tet, l);
-      if (keyed[j].kind == PointKind::kOriginal) continue;  // cheap to key again
-      out.points.push_back(keyed[j]);
-      out.sources.push_back(point_source(tet, l, classifier, recipe));
-      slot[l] = static_cast<std::uint8_t>(out.points.size());
-    }
-    out.tets.push_back(keyed);
-  }
-  return out;
-}
-
 CutCase split_tet(const Tet& tet, const TetConfig& config, const CutClassifier& classifier, SplitTable& table,
                   VertexFactory& factory, std::vector<Tet>& out) {
   const SplitRecipe& recipe = table.recipe(config);

@@ -11,7 +11,6 @@
 // compute them from the same bits, so they get the same vertices.
 
 #include <array>
-#include <optional>
 #include <vector>
 
 #include "cut/split_table.h"
@@ -25,19 +24,8 @@ PointKey point_key(const Tet& tet, Label label);
 // Where that point is. `recipe` is used for the 1:17 centre only.
 PointSource point_source(const Tet& tet, Label label, const CutClassifier& classifier, const SplitRecipe& recipe);
 
-// The split of one tet over keyed points, positively oriented.
-struct KeyedSplit {
-  CutCase kind = CutCase::kA;
-  std::vector<std::array<PointKey, 4>> tets;
-  std::vector<PointKey> points;          // the distinct new points used
-  std::vector<PointSource> sources;      // (points) where each is
-};
-
-// nullopt when the tet is not cut.
-std::optional<KeyedSplit> split_tet_keyed(const Tet& tet, const CutClassifier& classifier, SplitTable& table);
-
-// The same, resolved to vertex ids by `factory`; the tets are appended to
-// `out`. `config` must be classifier.configure(tet) and cut. Returns the case.
+// The split of one tet, resolved to vertex ids by `factory`; the tets are
+// appended to `out`. `config` must be classifier.configure(tet) and cut. Returns the case.
 CutCase split_tet(const Tet& tet, const TetConfig& config, const CutClassifier& classifier, SplitTable& table,
                   VertexFactory& factory, std::vector<Tet>& out);
 

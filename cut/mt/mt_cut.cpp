@@ -10,6 +10,7 @@
 #include <string>
 #include <tuple>
 
+#include "cut/recipe_faces.h"
 #include "cut/tet_splitter.h"
 #include "engine/tet_geometry.h"
 
@@ -21,42 +22,6 @@ using engine::FaceMask;
 using engine::kTetFaces;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-int local_index(const Tet& tet, std::int32_t v) {
-  for (int i = 0; i < 4; ++i)
-    if (tet[i].value == v) return i;
-  return -1;
-}
-
-// The faces of `tet` (bit i: the face opposite local vertex i) a point lies on.
-std::uint8_t faces_holding(const Tet& tet, const PointKey& key) {
-  const auto without = [&](std::int32_t v) {
-    const int i = local_index(tet, v);
-    return static_cast<std::uint8_t>(i < 0 ? 0 : 1u << i);
-  };
-  switch (key.kind) {
-    case PointKind::kOriginal:
-    case PointKind::kVertexCopy: return static_cast<std::uint8_t>(0xF & ~without(key.ids[0]));
-    case PointKind::kEdgePoint: return static_cast<std::uint8_t>(0xF & ~without(key.ids[0]) & ~without(key.ids[1]));
-    case PointKind::kFacePoint:
-    case PointKind::kFaceNode: {
-      std::uint8_t on = 0xF;
-      for (int j = 0; j < 3; ++j) on = static_cast<std::uint8_t>(on & ~without(key.ids[j]));
-      return on;  // the one vertex not in the face
-    }
-    case PointKind::kCentre: return 0;
-  }
-  return 0;
-}
-
-std::array<VertId, 3> sorted_face(const Tet& tet, int f) {
-  VertId a = tet[kTetFaces[f][0]], b = tet[kTetFaces[f][1]], c = tet[kTetFaces[f][2]];
-  // Three compare-exchanges (std::sort's introsort costs several times that on 3).
-  if (b < a) std::swap(a, b);
-  if (c < b) std::swap(b, c);
-  if (b < a) std::swap(a, b);
-  return {a, b, c};
-}
 
 // The side a tet that is not cut lies on: the side of its strict vertices,
 // or, when none is strict, the side its vertices lean to.
@@ -130,17 +95,20 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
   // add the tets around each such vertex (they are not candidates: one that
   // the cut crosses overlaps the polygon's box and was found already).
   {
+    // One walk over the box of all such vertices (a point query per vertex
+    // costs a walk each, and a progressive cut continuing the last one in
+    // its plane splits hundreds of vertices).
     std::vector<TetId> around;
-    for (VertId v : classifier_.on_vertices()) {
-      if (classifier_.state(v) != VertexState::kOnActive) continue;
-      engine::Aabb at;
-      at.extend(mt.position(v));
+    engine::Aabb at;
+    for (VertId v : classifier_.on_vertices())
+      if (classifier_.state(v) == VertexState::kOnActive) at.extend(mt.position(v));
+    if (!at.empty())
       bvh.for_each_overlapping(mt, at, [&](TetId t) {
         const Tet& tet = mt.tet(t);
-        if (std::find(tet.begin(), tet.end(), v) != tet.end()) around.push_back(t);
+        if (std::any_of(tet.begin(), tet.end(), [&](VertId v) { return classifier_.state(v) == VertexState::kOnActive; }))
+          around.push_back(t);
         return true;
       });
-    }
     std::sort(around.begin(), around.end());
     around.erase(std::unique(around.begin(), around.end()), around.end());
     std::vector<TetId> extra;
@@ -149,49 +117,63 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
     candidate.resize(found.size(), 0);
   }
 
+  if (table.scheme() != def_.scheme) throw std::invalid_argument("MtCut: the split table is for another scheme");
+  // Which tets change, and their pieces over vertex ids (new points are
+  // numbered as this scan first meets them, then renumbered by key).
+  first_vertex_ = mt.num_vertices();
+  std::vector<TetConfig> configs(found.size());
+  std::vector<std::uint8_t> split(found.size(), 0);
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    if (!candidate[i]) continue;
+    configs[i] = classifier_.configure(mt.tet(found[i]));
+    split[i] = configs[i].is_cut();
+  }
+  // A vertex the cut passes through is split only where it separates
+  // something: when a tet around it is cut or lies on the positive side. One
+  // with every tet around it on the negative side (say, the negative copy a
+  // cut made, met again by the next cut in the same plane) would only be
+  // renamed, with every tet around it relabelled, at every resolution: skip.
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Tet& tet = mt.tet(found[i]);
-    bool split = false;
-    if (candidate[i]) split = classifier_.configure(tet).is_cut();
-    if (!split) {
-      const bool on_split_vertex = std::any_of(
-          tet.begin(), tet.end(), [&](VertId v) { return classifier_.state(v) == VertexState::kOnActive; });
+    if (!split[i] && side_of_uncut(tet, classifier_) != VertexState::kPos) continue;
+    for (VertId v : tet)
+      if (classifier_.state(v) == VertexState::kOnActive) separated_.insert(v.value);
+  }
+  pending_of_.reserve(found.size());
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    const Tet& tet = mt.tet(found[i]);
+    Pending p;
+    p.tet = found[i];
+    p.split = split[i] != 0;
+    if (!p.split) {
+      const bool on_split_vertex = std::any_of(tet.begin(), tet.end(), [&](VertId v) { return separates(v); });
       if (!on_split_vertex || side_of_uncut(tet, classifier_) == VertexState::kPos) continue;
     }
-    pending_of_.emplace(found[i].value, static_cast<std::int32_t>(pending_.size()));
-    pending_.push_back({found[i], split, false, {}});
+    if (p.split)
+      resolve_split(p, tet, configs[i], table);
+    else
+      resolve_relabel(p, tet);
+    pending_of_.emplace(p.tet.value, static_cast<std::int32_t>(pending_.size()));
+    pending_.push_back(p);
   }
 
-  // Every split, and the points the cut makes, in key order.
-  if (table.scheme() != def_.scheme) throw std::invalid_argument("MtCut: the split table is for another scheme");
-  std::unordered_map<PointKey, PointSource, PointKeyHash> points;
-  for (Pending& p : pending_) {
-    const Tet& tet = mt.tet(p.tet);
-    if (p.split) {
-      std::optional<KeyedSplit> keyed = split_tet_keyed(tet, classifier_, table);
-      if (!keyed) throw std::logic_error("MtCut: a tet found cut has no split");
-      p.keyed = std::move(*keyed);
-      for (std::size_t k = 0; k < p.keyed.points.size(); ++k) {
-        const PointKey& key = p.keyed.points[k];
-        if (key.kind == PointKind::kVertexCopy && key.side > 0) continue;  // the vertex itself
-        points.emplace(key, p.keyed.sources[k]);
-      }
-    } else {
-      for (VertId v : tet)
-        if (classifier_.state(v) == VertexState::kOnActive) points.emplace(copy_key(v), copy_source(v, geometry_));
-    }
-  }
-  points_.assign(points.begin(), points.end());
-  std::sort(points_.begin(), points_.end(), [](const auto& a, const auto& b) { return key_less(a.first, b.first); });
+  number_points_by_key();
 
-  // Jobs: the fragments creating the pending tets.
+  // Jobs: the fragments creating the pending tets, each with its tets.
   for (const Pending& p : pending_) jobs_.push_back(mt.birth(p.tet));
   std::sort(jobs_.begin(), jobs_.end());
   jobs_.erase(std::unique(jobs_.begin(), jobs_.end()), jobs_.end());
-  job_tets_.resize(jobs_.size());
+  job_first_.assign(jobs_.size() + 1, 0);
+  std::vector<std::uint32_t> job_index(pending_.size());
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    job_index[i] = static_cast<std::uint32_t>(job_of(mt.birth(pending_[i].tet)));
+    ++job_first_[job_index[i] + 1];
+  }
+  for (std::size_t j = 0; j < jobs_.size(); ++j) job_first_[j + 1] += job_first_[j];
+  job_tets_.resize(pending_.size());
+  std::vector<std::uint32_t> fill(job_first_.begin(), job_first_.end() - 1);
+  for (std::size_t i = 0; i < pending_.size(); ++i) job_tets_[fill[job_index[i]]++] = static_cast<std::int32_t>(i);
   job_done_.assign(jobs_.size(), 0);
-  for (std::size_t i = 0; i < pending_.size(); ++i)
-    job_tets_[job_of(mt.birth(pending_[i].tet))].push_back(static_cast<std::int32_t>(i));
   find_seconds_ = seconds_since(start);
 }
 
@@ -204,7 +186,7 @@ std::size_t MtCut::job_of(FragId f) const {
 std::size_t MtCut::job_cost(const Mt& mt, std::size_t job) const {
   if (job_done_[job]) return 0;
   std::size_t cost = 1;
-  for (std::int32_t i : job_tets_[job]) cost += !pending_[static_cast<std::size_t>(i)].done;
+  for (std::int32_t i : job_tets(job)) cost += !pending_[static_cast<std::size_t>(i)].done;
   for (TetId t : mt.replaced(jobs_[job])) {
     const auto it = pending_of_.find(t.value);
     if (it != pending_of_.end() && !pending_[static_cast<std::size_t>(it->second)].done) ++cost;
@@ -212,89 +194,107 @@ std::size_t MtCut::job_cost(const Mt& mt, std::size_t job) const {
   return cost;
 }
 
+template <class Source>
+VertId MtCut::point_id(const PointKey& key, Source&& source) {
+  const auto [it, inserted] = point_index_.try_emplace(key, static_cast<std::int32_t>(points_.size()));
+  if (inserted) points_.push_back({key, source()});
+  return VertId(static_cast<std::int32_t>(first_vertex_) + it->second);
+}
+
+void MtCut::number_points_by_key() {
+  // Ids follow the keys, not the scan: the scan's order is that of tet ids,
+  // which follow the order the jobs of the last cut ran in.
+  const std::size_t n = points_.size();
+  std::vector<std::int32_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](std::int32_t a, std::int32_t b) { return key_less(points_[a].key, points_[b].key); });
+  std::vector<std::int32_t> rank(n);
+  std::vector<NewPoint> sorted;
+  sorted.reserve(n);
+  for (std::size_t r = 0; r < n; ++r) {
+    rank[static_cast<std::size_t>(order[r])] = static_cast<std::int32_t>(r);
+    sorted.push_back(points_[static_cast<std::size_t>(order[r])]);
+  }
+  points_ = std::move(sorted);
+  const auto first = static_cast<std::int32_t>(first_vertex_);
+  for (Tet& piece : piece_tets_)
+    for (VertId& v : piece)
+      if (v.value >= first) v = VertId(first + rank[static_cast<std::size_t>(v.value - first)]);
+  point_index_.clear();  // holds the scan's numbering; not needed any more
+}
+
+void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config, SplitTable& table) {
+  const SplitRecipe& recipe = table.recipe(config);
+  p.recipe = &recipe;
+  p.first = static_cast<std::uint32_t>(piece_tets_.size());
+  p.count = static_cast<std::uint8_t>(recipe.tets.size());
+  // Each label once (it is a corner of several pieces): -1 = not met yet.
+  std::array<std::int32_t, kLabelCount> id_of;
+  for (const auto& t : recipe.tets)
+    for (Label l : t) id_of[l] = -1;
+  for (const auto& t : recipe.tets) {
+    Tet piece;
+    for (int c = 0; c < 4; ++c) {
+      const Label l = t[c];
+      if (id_of[l] < 0) {
+        if (label_kind(l) == LabelKind::kVertex && label_side(l) != LabelSide::kNeg)
+          id_of[l] = tet[label_index(l)].value;  // the vertex itself
+        else
+          id_of[l] = point_id(point_key(tet, l), [&] { return point_source(tet, l, classifier_, recipe); }).value;
+      }
+      piece[c] = VertId(id_of[l]);
+    }
+    piece_tets_.push_back(piece);
+  }
+  new_tets_ += recipe.tets.size();
+}
+
+void MtCut::resolve_relabel(Pending& p, const Tet& tet) {
+  // Onto the negative copies of the vertices the cut passes through; a face
+  // lying in the cut (all its vertices on it) becomes surface.
+  Tet moved = tet;
+  for (VertId& v : moved)
+    if (separates(v)) v = point_id(copy_key(v), [&] { return copy_source(v, geometry_); });
+  for (int f = 0; f < 4; ++f) {
+    const auto& fv = kTetFaces[f];
+    if (std::all_of(fv.begin(), fv.end(), [&](int c) { return is_on(classifier_.state(tet[c])); }))
+      p.on_faces = static_cast<std::uint8_t>(p.on_faces | 1u << f);
+  }
+  p.first = static_cast<std::uint32_t>(piece_tets_.size());
+  p.count = 1;
+  piece_tets_.push_back(moved);
+}
+
 void MtCut::add_vertices(Mt& mt, MtChangeReport& report) {
-  point_ids_.reserve(points_.size());
+  if (mt.num_vertices() != first_vertex_)
+    throw std::logic_error("MtCut: MT vertices were added between the start of the cut and its first job");
+  mt.reserve(mt.num_vertices() + points_.size(), mt.num_tets() + new_tets_ + pending_.size());
+  report.made_vertices.reserve(report.made_vertices.size() + points_.size());
   for (const auto& [key, source] : points_) {
     Vec3 rest = Vec3::Zero();
     for (int i = 0; i < 4; ++i)
       if (source.parents[i].valid()) rest += source.weights[i] * mt.position(source.parents[i]);
     const VertId id = mt.add_vertex(rest);
-    point_ids_.emplace(key, id);
     report.made_vertices.push_back({id, key, source, rest});
   }
   report.counts.new_vertices += points_.size();
   vertices_added_ = true;
 }
 
-VertId MtCut::vertex_of(const PointKey& key) const {
-  if (key.kind == PointKind::kOriginal || (key.kind == PointKind::kVertexCopy && key.side > 0)) return VertId(key.ids[0]);
-  const auto it = point_ids_.find(key);
-  if (it == point_ids_.end()) throw std::logic_error("MtCut: a point was not made");
-  return it->second;
-}
-
 void MtCut::change_tet(Mt& mt, TetBvh& bvh, Pending& p, MtChangeReport& report) {
   assert(!p.done && mt.alive(p.tet));
   const TetId old = p.tet;
-  const Tet tet = mt.tet(old);
-  const FragId birth = mt.birth(old), death = mt.death(old);
   const FaceMask mask = mt.boundary_mask(old);
   pieces_.clear();
-
+  const std::span<const Tet> made(piece_tets_.data() + p.first, p.count);
   if (p.split) {
-    const KeyedSplit* split = &p.keyed;
-    // Resolve keys to vertices; note the faces of `tet` each corner lies on.
-    std::vector<Tet>& made = made_;
-    std::vector<std::array<std::uint8_t, 4>>& on_face = on_face_;
-    made.resize(split->tets.size());
-    on_face.resize(split->tets.size());
-    for (std::size_t j = 0; j < split->tets.size(); ++j)
-      for (int c = 0; c < 4; ++c) {
-        const PointKey& key = split->tets[j][c];
-        on_face[j][c] = faces_holding(tet, key);
-        made[j][c] = vertex_of(key);
-      }
-    // Surface faces: a piece face inside a face of `tet` keeps that face's
-    // bit; a face no other piece shares and inside no face of `tet` is made
-    // by the cut.
-    std::vector<std::array<VertId, 3>>& faces = faces_;
-    faces.clear();
-    for (const Tet& m : made)
-      for (int f = 0; f < 4; ++f) faces.push_back(sorted_face(m, f));
-    std::sort(faces.begin(), faces.end());
-    for (std::size_t j = 0; j < made.size(); ++j) {
-      FaceMask piece_mask = 0;
-      for (int f = 0; f < 4; ++f) {
-        const auto& fv = kTetFaces[f];
-        const std::uint8_t common = on_face[j][fv[0]] & on_face[j][fv[1]] & on_face[j][fv[2]];
-        bool surface;
-        if (common != 0) {
-          surface = (common & mask) != 0;
-        } else {
-          const auto face = sorted_face(made[j], f);
-          const auto range = std::equal_range(faces.begin(), faces.end(), face);
-          surface = range.second - range.first == 1;
-        }
-        if (surface) piece_mask = static_cast<FaceMask>(piece_mask | 1u << f);
-      }
-      pieces_.push_back(mt.add_tet(made[j], birth, death, piece_mask));
-    }
+    for (std::size_t j = 0; j < made.size(); ++j)
+      pieces_.push_back(mt.add_piece(made[j], old, piece_mask(p.recipe->faces[j], mask)));
     ++report.counts.split_tets;
     report.counts.new_tets += made.size();
   } else {
-    // Relabel onto the negative copies of the vertices the cut passes
-    // through; a face lying in the cut (all its vertices on it) is now surface.
-    Tet moved = tet;
-    for (VertId& v : moved) {
-      if (classifier_.state(v) == VertexState::kOnActive) v = vertex_of(copy_key(v));
-    }
-    FaceMask piece_mask = mask;
-    for (int f = 0; f < 4; ++f) {
-      const auto& fv = kTetFaces[f];
-      if (std::all_of(fv.begin(), fv.end(), [&](int c) { return is_on(classifier_.state(tet[c])); }))
-        piece_mask = static_cast<FaceMask>(piece_mask | 1u << f);
-    }
-    pieces_.push_back(mt.add_tet(moved, birth, death, piece_mask));
+    pieces_.push_back(mt.add_piece(made[0], old, static_cast<FaceMask>(mask | p.on_faces)));
     ++report.counts.relabeled_tets;
   }
   mt.kill_tet(old);
@@ -312,17 +312,17 @@ void MtCut::process(Mt& mt, TetBvh& bvh, std::size_t job, MtChangeReport& report
   if (!vertices_added_) add_vertices(mt, report);
   // Step 2 for the tets f creates and, so that f sees its whole region
   // final, the pending tets it replaces (their own job will find them done).
-  for (std::int32_t i : job_tets_[job]) {
+  for (std::int32_t i : job_tets(job)) {
     Pending& p = pending_[static_cast<std::size_t>(i)];
     if (!p.done) change_tet(mt, bvh, p, report);
   }
-  std::vector<std::int32_t> from_parents;
+  from_parents_.clear();
   for (TetId t : mt.replaced(f)) {
     const auto it = pending_of_.find(t.value);
     if (it != pending_of_.end() && !pending_[static_cast<std::size_t>(it->second)].done)
-      from_parents.push_back(it->second);
+      from_parents_.push_back(it->second);
   }
-  for (std::int32_t i : from_parents) change_tet(mt, bvh, pending_[static_cast<std::size_t>(i)], report);
+  for (std::int32_t i : from_parents_) change_tet(mt, bvh, pending_[static_cast<std::size_t>(i)], report);
   const auto dag_start = Clock::now();
   report.counts.split_seconds += std::chrono::duration<double>(dag_start - start).count();
 
@@ -349,7 +349,7 @@ engine::ValidationReport MtCut::validate(const Mt& mt) const {
   std::size_t done = 0;
   for (std::size_t j = 0; j < jobs_.size(); ++j) {
     done += job_done_[j];
-    for (std::int32_t i : job_tets_[j]) {
+    for (std::int32_t i : job_tets(j)) {
       const Pending& p = pending_[static_cast<std::size_t>(i)];
       if (p.done && mt.alive(p.tet)) report.add("MtCut: tet " + std::to_string(p.tet.value) + " changed but alive");
       if (!p.done && !mt.alive(p.tet)) report.add("MtCut: tet " + std::to_string(p.tet.value) + " pending but dead");

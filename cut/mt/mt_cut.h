@@ -29,16 +29,24 @@
 // tessellations. A planar cut surface is the same in every resolution.
 //
 // Vertex ids. The LUT chooses quad diagonals by global vertex id, so ids must
-// not depend on the order of the jobs: the cut computes every split when it
-// starts (keyed points, tet_splitter.h), and the first job appends all the
-// new vertices at once in the order of their keys. One cut must finish
-// before the next starts.
+// not depend on the order of the jobs, even through later cuts (tet ids do):
+// the cut resolves every split to vertex ids when it starts (keyed points,
+// tet_splitter.h, numbered in key order), and the first job appends all the
+// new vertices at once. One cut must finish before the next starts, and
+// nothing else may add MT vertices meanwhile.
+//
+// Why the splits are resolved up front. A split is a recipe of local labels;
+// resolving a label is a hash lookup of its key. Doing it once per label and
+// tet when the cut starts, into a flat array of pieces, leaves each job only
+// appending tets (the boundary mask of a piece comes from the recipe,
+// recipe_faces.h), so the cost of a job is what the MT and the BVH edits cost.
 
 #include <cstdint>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
+#include "absl/container/flat_hash_map.h"
+#include "absl/container/flat_hash_set.h"
 #include "cut/cut_polygon.h"
 #include "cut/mt/fragment_decomposition.h"
 #include "cut/mt/mt_change_report.h"
@@ -96,37 +104,56 @@ class MtCut {
  private:
   struct Pending {
     TetId tet;
-    bool split = false;  // else relabel onto vertex copies
+    std::uint32_t first = 0;             // its pieces in piece_tets_
+    std::uint8_t count = 0;              // number of pieces (1 for a relabel)
+    std::uint8_t on_faces = 0;           // relabel: faces lying in the cut (all vertices on it)
+    bool split = false;                  // else relabel onto vertex copies
     bool done = false;
-    KeyedSplit keyed;    // the split (split tets only)
+    const SplitRecipe* recipe = nullptr; // split tets: the pieces' faces
+  };
+  struct NewPoint {
+    PointKey key;
+    PointSource source;
   };
   void change_tet(Mt& mt, TetBvh& bvh, Pending& p, MtChangeReport& report);
   void add_vertices(Mt& mt, MtChangeReport& report);
-  VertId vertex_of(const PointKey& key) const;
+  // The vertex of `key`, numbered (and its source recorded by `source()`)
+  // when the cut first meets it; number_points_by_key() renumbers.
+  template <class Source>
+  VertId point_id(const PointKey& key, Source&& source);
+  void resolve_split(Pending& p, const Tet& tet, const TetConfig& config, SplitTable& table);
+  void resolve_relabel(Pending& p, const Tet& tet);
+  // Renumbers the new points in key order (in points_ and piece_tets_).
+  void number_points_by_key();
   std::size_t job_of(FragId f) const;
+  // v is on the cut and separates something (see the constructor).
+  bool separates(VertId v) const { return separated_.contains(v.value); }
+  std::span<const std::int32_t> job_tets(std::size_t job) const {
+    return std::span<const std::int32_t>(job_tets_).subspan(job_first_[job], job_first_[job + 1] - job_first_[job]);
+  }
 
   CutPolygon polygon_;
   std::vector<Vec3> geometry_;  // (n_vertices at start) positions the cut is computed on
   MtCutDef def_;
   CutClassifier classifier_;
-  std::vector<std::pair<PointKey, PointSource>> points_;            // new points, in key order
-  std::unordered_map<PointKey, VertId, PointKeyHash> point_ids_;  // after add_vertices
+  std::size_t first_vertex_ = 0;  // id of the first new vertex (the MT's vertex count at start)
+  std::vector<NewPoint> points_;  // new points, in id (key) order
+  absl::flat_hash_map<PointKey, std::int32_t, PointKeyHash> point_index_;  // key -> index in points_
   bool vertices_added_ = false;
-  std::vector<Pending> pending_;                             // tets to change
-  std::unordered_map<std::int32_t, std::int32_t> pending_of_;  // tet id -> index in pending_
+  std::vector<Pending> pending_;    // tets to change, in the search's order
+  std::vector<Tet> piece_tets_;     // the pieces of every pending tet, final vertex ids
+  std::size_t new_tets_ = 0;        // pieces of split tets
+  absl::flat_hash_map<std::int32_t, std::int32_t> pending_of_;  // tet id -> index in pending_
+  absl::flat_hash_set<std::int32_t> separated_;  // split vertices with a cut or positive tet around them
   std::vector<FragId> jobs_;
-  std::vector<std::vector<std::int32_t>> job_tets_;  // (jobs) pending tets the fragment creates
+  std::vector<std::uint32_t> job_first_;  // (jobs + 1) offsets into job_tets_
+  std::vector<std::int32_t> job_tets_;    // pending tets each job's fragment creates
   std::vector<std::uint8_t> job_done_;
   std::size_t jobs_done_ = 0;
   double find_seconds_ = 0;
   DecompositionScratch scratch_;
-  std::vector<TetId> pieces_;  // scratch
-  // Scratch of change_tet, kept so that a split allocates nothing: the
-  // pieces' vertices, the faces of the old tet each corner lies on, and the
-  // pieces' sorted faces.
-  std::vector<Tet> made_;
-  std::vector<std::array<std::uint8_t, 4>> on_face_;
-  std::vector<std::array<VertId, 3>> faces_;
+  std::vector<TetId> pieces_;                // scratch of change_tet
+  std::vector<std::int32_t> from_parents_;   // scratch of process
 };
 
 // Order in which cut_mt processes the jobs (tests check they agree).

@@ -147,7 +147,7 @@ Mt extract_piece_mt(const Mt& mt, const MtPieces& pieces, std::size_t piece, std
     out.set_death(TetId(i), frag_map[mt.death(fine[i]).index()]);
   }
   for (TetId t : rest)
-    out.add_tet(renumber(t), frag_map[mt.birth(t).index()], frag_map[mt.death(t).index()], mt.boundary_mask(t));
+    out.add_copy(mt, t, renumber(t), frag_map[mt.birth(t).index()], frag_map[mt.death(t).index()]);
   if (vertex_ids) *vertex_ids = std::move(ids);
   return out;
 }

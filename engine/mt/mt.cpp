@@ -46,6 +46,23 @@ VertId Mt::add_vertex(const Vec3& rest_position) {
   return VertId(positions_.size() - 1);
 }
 
+void Mt::reserve(std::size_t vertices, std::size_t tets) {
+  // Geometric growth: a cut reserves what it adds, and reserving exactly that
+  // would copy every array once per cut.
+  const auto grow = [](auto& v, std::size_t n) {
+    if (n > v.capacity()) v.reserve(std::max(n, v.capacity() + v.capacity() / 2));
+  };
+  grow(positions_, vertices);
+  grow(tet_verts_, tets);
+  grow(tet_birth_, tets);
+  grow(tet_death_, tets);
+  grow(tet_error_, tets);
+  grow(tet_error_inherited_, tets);
+  grow(tet_boundary_, tets);
+  grow(tet_birth_slot_, tets);
+  grow(tet_death_slot_, tets);
+}
+
 std::array<Vec3, 4> Mt::corners(TetId t) const {
   const Tet& v = tet(t);
   return {position(v[0]), position(v[1]), position(v[2]), position(v[3])};
@@ -57,11 +74,25 @@ double Mt::volume(TetId t) const {
 }
 
 TetId Mt::add_tet(const Tet& verts, FragId birth, FragId death, FaceMask boundary) {
+  const Vec3 &a = position(verts[0]), &b = position(verts[1]), &c = position(verts[2]), &d = position(verts[3]);
+  return append_tet(verts, birth, death, boundary, tet_error(a, b, c, d), false);
+}
+
+TetId Mt::add_piece(const Tet& verts, TetId whole, FaceMask boundary) {
+  assert(alive(whole));
+  return append_tet(verts, birth(whole), death(whole), boundary, error(whole), true);
+}
+
+TetId Mt::add_copy(const Mt& source, TetId t, const Tet& verts, FragId birth, FragId death) {
+  return append_tet(verts, birth, death, source.boundary_mask(t), source.error(t), source.error_inherited(t));
+}
+
+TetId Mt::append_tet(const Tet& verts, FragId birth, FragId death, FaceMask boundary, float error, bool inherited) {
   assert(birth.valid() && birth.index() < num_fragments());
   const TetId t(tet_verts_.size());
   tet_verts_.push_back(verts);
-  const auto c = corners(t);
-  tet_error_.push_back(tet_error(c[0], c[1], c[2], c[3]));
+  tet_error_.push_back(error);
+  tet_error_inherited_.push_back(inherited ? 1 : 0);
   tet_boundary_.push_back(boundary);
   tet_birth_.push_back(birth);
   tet_birth_slot_.push_back(static_cast<std::int32_t>(frag_created_[birth.index()].size()));
@@ -163,7 +194,8 @@ std::vector<FragId> Mt::topological_order() const {
 
 std::size_t Mt::bytes() const {
   std::size_t total = vector_bytes(positions_) + vector_bytes(tet_verts_) + vector_bytes(tet_birth_) +
-                      vector_bytes(tet_death_) + vector_bytes(tet_error_) + vector_bytes(tet_boundary_) +
+                      vector_bytes(tet_death_) + vector_bytes(tet_error_) + vector_bytes(tet_error_inherited_) +
+                      vector_bytes(tet_boundary_) +
                       vector_bytes(tet_birth_slot_) + vector_bytes(tet_death_slot_) + vector_bytes(frag_created_) +
                       vector_bytes(frag_replaced_);
   for (const auto& list : frag_created_) total += vector_bytes(list);

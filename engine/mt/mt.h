@@ -55,6 +55,9 @@ class Mt {
   const Vec3& position(VertId v) const { return positions_[v.index()]; }
   std::span<const Vec3> positions() const { return positions_; }
   VertId add_vertex(const Vec3& rest_position);
+  // Room for this many vertices and tets in all, so that a cut that knows
+  // how much it adds appends without reallocating.
+  void reserve(std::size_t vertices, std::size_t tets);
 
   // --- tets: slots 0..num_tets()-1, dead ones included
   std::size_t num_tets() const { return tet_verts_.size(); }
@@ -63,6 +66,8 @@ class Mt {
   FragId birth(TetId t) const { return tet_birth_[t.index()]; }
   FragId death(TetId t) const { return tet_death_[t.index()]; }
   float error(TetId t) const { return tet_error_[t.index()]; }
+  // The error was given (a cut piece's is its split tet's), not computed from the corners.
+  bool error_inherited(TetId t) const { return tet_error_inherited_[t.index()] != 0; }
   FaceMask boundary_mask(TetId t) const { return tet_boundary_[t.index()]; }
   bool alive(TetId t) const { return tet_birth_[t.index()].valid(); }
   std::array<Vec3, 4> corners(TetId t) const;
@@ -72,6 +77,16 @@ class Mt {
   // `death` (none while the builder has not decided yet). Its error is
   // computed from the positions (tet_error.h).
   TetId add_tet(const Tet& verts, FragId birth, FragId death, FaceMask boundary);
+  // Appends a piece of `whole` (alive; a cut's R(t), paper section 4): born
+  // and dying in the same fragments, its error is `whole`'s. That is an upper
+  // bound of its own error (the piece lies in the whole's enclosing sphere),
+  // and the right value: the error says how far this level is from the fine
+  // mesh, which a cut does not change. So a cut leaves every fragment's error,
+  // and the frontiers selective refinement picks, as they were.
+  TetId add_piece(const Tet& verts, TetId whole, FaceMask boundary);
+  // Appends a copy of `source`'s tet `t` over `verts` in fragments `birth`,
+  // `death` of this MT, with t's error (computed or inherited) kept.
+  TetId add_copy(const Mt& source, TetId t, const Tet& verts, FragId birth, FragId death);
   // Removes t from the MT: it leaves its fragments' lists; the slot stays.
   void kill_tet(TetId t);
   // Moves t to another creating / replacing fragment (re-attaching an arc).
@@ -120,6 +135,7 @@ class Mt {
   ValidationReport validate() const;
 
  private:
+  TetId append_tet(const Tet& verts, FragId birth, FragId death, FaceMask boundary, float error, bool inherited);
   static void erase_from(std::vector<std::vector<TetId>>& lists, std::vector<std::int32_t>& slots, FragId f,
                          TetId t);
 
@@ -129,6 +145,7 @@ class Mt {
   std::vector<FragId> tet_birth_;               // (n_tets) creating fragment; none = dead tet
   std::vector<FragId> tet_death_;               // (n_tets) replacing fragment; none while building
   std::vector<float> tet_error_;                // (n_tets) e(t), tet_error.h
+  std::vector<std::uint8_t> tet_error_inherited_;  // (n_tets) 1: error given by add_piece / add_copy
   std::vector<FaceMask> tet_boundary_;          // (n_tets) surface faces
   std::vector<std::int32_t> tet_birth_slot_;    // (n_tets) index of t in created(birth(t))
   std::vector<std::int32_t> tet_death_slot_;    // (n_tets) index of t in replaced(death(t)), -1 if none

@@ -41,7 +41,12 @@ void check_tets(const Mt& mt, ValidationReport& report) {
       report.add(tn + " repeats a vertex");
     const auto c = mt.corners(t);
     if (orient3d_sign(c[0], c[1], c[2], c[3]) <= 0) report.add(tn + " is not positively oriented");
-    if (mt.error(t) != tet_error(c[0], c[1], c[2], c[3])) report.add(tn + " has a stale error");
+    const float own = tet_error(c[0], c[1], c[2], c[3]);
+    if (!mt.error_inherited(t) && mt.error(t) != own) report.add(tn + " has a stale error");
+    // An inherited error is its split tet's: never below the piece's own
+    // (up to the rounding of two enclosing-sphere computations).
+    if (mt.error_inherited(t) && !(mt.error(t) >= own * (1 - 1e-6f)))
+      report.add(tn + " has an inherited error below its own");
   }
   // Every live tet once in created(birth) and once in replaced(death), nothing else listed.
   std::vector<char> in_created(mt.num_tets(), 0), in_replaced(mt.num_tets(), 0);
