@@ -5,7 +5,6 @@
 #include <thread>
 
 #include "app/mt_command.h"
-#include "cut/mt/scalpel_steps_bench.h"
 #include "cut/mt/table1_bench.h"
 #include "engine/atomic_file.h"
 
@@ -110,21 +109,6 @@ nlohmann::ordered_json run_table1_bench(const Table1BenchDef& def) {
   out["rows"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < result.rows.size(); ++i)
     out["rows"].push_back(row_json(result.rows[i], cut::kPaperTable1[i]));
-  cut::ScalpelStepsDef steps_def;
-  steps_def.runs = def.runs;
-  const cut::ScalpelStepsResult steps = cut::run_scalpel_steps(built.mt, steps_def);
-  out["scalpel_steps"] = {{"steps", steps.steps},
-                          {"step_length", steps.step_length},
-                          {"depth", steps_def.depth},
-                          {"median_split_tets", steps.median_split_tets},
-                          {"max_split_tets", steps.max_split_tets},
-                          {"total_split_tets", steps.total_split_tets},
-                          {"total_relabeled_tets", steps.total_relabeled_tets},
-                          {"total_new_tets", steps.total_new_tets},
-                          {"median_ms", steps.median_ms},
-                          {"p95_ms", steps.p95_ms},
-                          {"max_ms", steps.max_ms},
-                          {"index_rebuilds", steps.index_rebuilds}};
   if (!def.markdown.empty())
     engine::write_stream_atomically(def.markdown, [&](std::ostream& md) { md << table1_markdown(out); });
   return out;
@@ -156,19 +140,6 @@ std::string table1_markdown(const nlohmann::ordered_json& report) {
        << pair_cell(row, "new_tets_lut", false) << " | " << pair_cell(row, "split_ms", true) << " | "
        << pair_cell(row, "dag_update_ms", true) << " | " << pair_cell(row, "total_ms", true) << " | "
        << row["pieces"].get<std::size_t>() << " |\n";
-  }
-  if (report.contains("scalpel_steps")) {
-    const auto& st = report["scalpel_steps"];
-    md << std::fixed;
-    md.precision(3);
-    md << "\nPer-frame steps: a blade " << st["depth"].get<double>() << " of the model deep drawn across it in "
-       << st["steps"].get<int>() << " steps, each step one cut of the quad it swept (progressive cutting). Per step "
-       << "that cut anything: " << st["median_split_tets"].get<std::size_t>() << " split tets median ("
-       << st["max_split_tets"].get<std::size_t>() << " max); the whole cut, index refresh included, "
-       << st["median_ms"].get<double>() << " ms median, " << st["p95_ms"].get<double>() << " ms p95, "
-       << st["max_ms"].get<double>() << " ms max (" << st["index_rebuilds"].get<std::size_t>()
-       << " index rebuilds per stroke).\n";
-    md.unsetf(std::ios::floatfield);
   }
   md << "\nMachine: " << machine["cpu"].get<std::string>() << ", " << machine["logical_cores"].get<unsigned>()
      << " logical cores (shared with other jobs: load average " << machine["load_average"].get<double>()

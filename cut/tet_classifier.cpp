@@ -131,11 +131,17 @@ void CutClassifier::veto(VertId v) {
   info_[v.index()].requested_off = true;
 }
 
+bool CutClassifier::may_be_cut(const Tet& tet) const {
+  std::array<std::int8_t, 4> s;
+  for (int i = 0; i < 4; ++i) s[i] = side_for_crossings(tet[i]);
+  return !(s[0] != 0 && s[0] == s[1] && s[1] == s[2] && s[2] == s[3]);
+}
+
 bool CutClassifier::add_candidate(const Tet& tet) {
   assert(!finalized_);
   std::array<std::int8_t, 4> s;
   for (int i = 0; i < 4; ++i) s[i] = side_for_crossings(tet[i]);
-  if (s[0] != 0 && s[0] == s[1] && s[1] == s[2] && s[2] == s[3]) return false;
+  if (s[0] != 0 && s[0] == s[1] && s[1] == s[2] && s[2] == s[3]) return false;  // as may_be_cut
 
   std::array<double, 4> d;
   for (int i = 0; i < 4; ++i) d[i] = polygon_.signed_distance(positions_[tet[i].index()]);

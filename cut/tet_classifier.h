@@ -35,9 +35,9 @@
 #include <array>
 #include <cstdint>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
+#include "absl/container/flat_hash_map.h"
 #include "cut/cut_polygon.h"
 #include "engine/tet_mesh.h"
 
@@ -106,6 +106,9 @@ class CutClassifier {
   // Phase 1. Declares a tet that may be cut; returns false (and forgets it)
   // when all its vertices are strictly on one side of the plane.
   bool add_candidate(const Tet& tet);
+  // What add_candidate would return, with no effect: a search can drop the
+  // tets that cannot be cut before it sorts the rest (after phase 0).
+  bool may_be_cut(const Tet& tet) const;
   // Phase 2: fixes the state of every vertex.
   void finalize();
 
@@ -182,7 +185,7 @@ class CutClassifier {
   double face_clamp_;
   bool finalized_ = false;
   mutable std::vector<VertexInfo> info_;  // (n_vertices)
-  mutable std::unordered_map<std::uint64_t, EdgeInfo> edges_;
+  mutable absl::flat_hash_map<std::uint64_t, EdgeInfo> edges_;  // straddling edges met so far
   std::vector<VertId> touched_;            // vertices of candidates
   std::vector<VertId> on_vertices_;
   std::vector<VertId> resided_;

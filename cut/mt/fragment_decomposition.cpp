@@ -23,56 +23,64 @@ Decomposition decompose_fragment(Mt& mt, FragId f, DecompositionScratch& s) {
   const auto created = mt.created(f);
   const auto replaced = mt.replaced(f);
   const std::size_t n_created = created.size();
-  s.tets.assign(created.begin(), created.end());
-  s.tets.insert(s.tets.end(), replaced.begin(), replaced.end());
-  const std::size_t n = s.tets.size();
+  const std::size_t n = n_created + replaced.size();
   if (n_created == 0) return out;
+  const auto tet_at = [&](std::size_t i) { return i < n_created ? created[i] : replaced[i - n_created]; };
 
-  // Union-find through shared vertices.
+  // Union-find through shared vertices; `root` follows tet i's root as it
+  // joins earlier tets (their roots are all below i).
   if (s.vertex_owner.size() < mt.num_vertices()) s.vertex_owner.resize(mt.num_vertices(), -1);
   s.parent.resize(n);
   std::iota(s.parent.begin(), s.parent.end(), 0);
   s.touched.clear();
   for (std::size_t i = 0; i < n; ++i) {
-    for (engine::VertId v : mt.tet(s.tets[i])) {
+    auto root = static_cast<std::int32_t>(i);
+    for (engine::VertId v : mt.tet(tet_at(i))) {
       std::int32_t& owner = s.vertex_owner[v.index()];
       if (owner < 0) {
         owner = static_cast<std::int32_t>(i);
         s.touched.push_back(v);
         continue;
       }
-      const std::int32_t a = find_root(s.parent, owner), b = find_root(s.parent, static_cast<std::int32_t>(i));
-      if (a != b) s.parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+      const std::int32_t a = find_root(s.parent, owner);
+      if (a == root) continue;
+      s.parent[static_cast<std::size_t>(std::max(a, root))] = std::min(a, root);
+      root = std::min(a, root);
     }
   }
   for (engine::VertId v : s.touched) s.vertex_owner[v.index()] = -1;
 
-  // Groups numbered by their first created tet; count both kinds per group.
+  // Groups numbered by their first tet (a created one); count both kinds.
   s.group.assign(n, -1);
-  std::vector<std::int32_t> created_count, replaced_count;
+  s.created_count.clear();
+  s.replaced_count.clear();
   for (std::size_t i = 0; i < n; ++i) {
     const auto r = static_cast<std::size_t>(find_root(s.parent, static_cast<std::int32_t>(i)));
     if (s.group[r] < 0) {
-      s.group[r] = static_cast<std::int32_t>(created_count.size());
-      created_count.push_back(0);
-      replaced_count.push_back(0);
+      s.group[r] = static_cast<std::int32_t>(s.created_count.size());
+      s.created_count.push_back(0);
+      s.replaced_count.push_back(0);
     }
     const auto g = static_cast<std::size_t>(s.group[r]);
-    (i < n_created ? created_count : replaced_count)[g] += 1;
+    s.group[i] = static_cast<std::int32_t>(g);  // i's own slot is no longer read as a root's
+    (i < n_created ? s.created_count : s.replaced_count)[g] += 1;
   }
-  const std::size_t k = created_count.size();
+  const std::size_t k = s.created_count.size();
   if (k == 1) return out;
   for (std::size_t g = 0; g < k; ++g)
-    if (created_count[g] == 0 || replaced_count[g] == 0) {
+    if (s.created_count[g] == 0 || s.replaced_count[g] == 0) {
       out.outcome = DecomposeOutcome::kKeptWhole;
       return out;
     }
 
+  // Adding fragments and moving tets edit the MT's lists: take the ids first.
+  s.tets.assign(created.begin(), created.end());
+  s.tets.insert(s.tets.end(), replaced.begin(), replaced.end());
   out.outcome = DecomposeOutcome::kSplit;
   out.parts.push_back(f);
   for (std::size_t g = 1; g < k; ++g) out.parts.push_back(mt.add_fragment());
   for (std::size_t i = 0; i < n; ++i) {
-    const auto g = static_cast<std::size_t>(s.group[static_cast<std::size_t>(find_root(s.parent, static_cast<std::int32_t>(i)))]);
+    const auto g = static_cast<std::size_t>(s.group[i]);
     if (g == 0) continue;
     if (i < n_created)
       mt.set_birth(s.tets[i], out.parts[g]);

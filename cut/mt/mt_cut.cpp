@@ -81,9 +81,12 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
   box.lo = polygon_.box_min() - Vec3::Constant(margin);
   box.hi = polygon_.box_max() + Vec3::Constant(margin);
 
+  // Tets with every vertex strictly on one side are dropped before the sort
+  // (a cut through the whole object finds every tet); those among them that
+  // hold a vertex the cut passes through come back below.
   std::vector<TetId> found;
   bvh.for_each_overlapping(mt, box, [&](TetId t) {
-    found.push_back(t);
+    if (classifier_.may_be_cut(mt.tet(t))) found.push_back(t);
     return true;
   });
   std::sort(found.begin(), found.end());  // BVH order must not leak into the result
@@ -128,17 +131,6 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
     configs[i] = classifier_.configure(mt.tet(found[i]));
     split[i] = configs[i].is_cut();
   }
-  // A vertex the cut passes through is split only where it separates
-  // something: when a tet around it is cut or lies on the positive side. One
-  // with every tet around it on the negative side (say, the negative copy a
-  // cut made, met again by the next cut in the same plane) would only be
-  // renamed, with every tet around it relabelled, at every resolution: skip.
-  for (std::size_t i = 0; i < found.size(); ++i) {
-    const Tet& tet = mt.tet(found[i]);
-    if (!split[i] && side_of_uncut(tet, classifier_) != VertexState::kPos) continue;
-    for (VertId v : tet)
-      if (classifier_.state(v) == VertexState::kOnActive) separated_.insert(v.value);
-  }
   pending_of_.reserve(found.size());
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Tet& tet = mt.tet(found[i]);
@@ -146,7 +138,8 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
     p.tet = found[i];
     p.split = split[i] != 0;
     if (!p.split) {
-      const bool on_split_vertex = std::any_of(tet.begin(), tet.end(), [&](VertId v) { return separates(v); });
+      const bool on_split_vertex = std::any_of(
+          tet.begin(), tet.end(), [&](VertId v) { return classifier_.state(v) == VertexState::kOnActive; });
       if (!on_split_vertex || side_of_uncut(tet, classifier_) == VertexState::kPos) continue;
     }
     if (p.split)
@@ -255,7 +248,8 @@ void MtCut::resolve_relabel(Pending& p, const Tet& tet) {
   // lying in the cut (all its vertices on it) becomes surface.
   Tet moved = tet;
   for (VertId& v : moved)
-    if (separates(v)) v = point_id(copy_key(v), [&] { return copy_source(v, geometry_); });
+    if (classifier_.state(v) == VertexState::kOnActive)
+      v = point_id(copy_key(v), [&] { return copy_source(v, geometry_); });
   for (int f = 0; f < 4; ++f) {
     const auto& fv = kTetFaces[f];
     if (std::all_of(fv.begin(), fv.end(), [&](int c) { return is_on(classifier_.state(tet[c])); }))

@@ -46,7 +46,6 @@
 #include <vector>
 
 #include "absl/container/flat_hash_map.h"
-#include "absl/container/flat_hash_set.h"
 #include "cut/cut_polygon.h"
 #include "cut/mt/fragment_decomposition.h"
 #include "cut/mt/mt_change_report.h"
@@ -126,8 +125,6 @@ class MtCut {
   // Renumbers the new points in key order (in points_ and piece_tets_).
   void number_points_by_key();
   std::size_t job_of(FragId f) const;
-  // v is on the cut and separates something (see the constructor).
-  bool separates(VertId v) const { return separated_.contains(v.value); }
   std::span<const std::int32_t> job_tets(std::size_t job) const {
     return std::span<const std::int32_t>(job_tets_).subspan(job_first_[job], job_first_[job + 1] - job_first_[job]);
   }
@@ -144,7 +141,6 @@ class MtCut {
   std::vector<Tet> piece_tets_;     // the pieces of every pending tet, final vertex ids
   std::size_t new_tets_ = 0;        // pieces of split tets
   absl::flat_hash_map<std::int32_t, std::int32_t> pending_of_;  // tet id -> index in pending_
-  absl::flat_hash_set<std::int32_t> separated_;  // split vertices with a cut or positive tet around them
   std::vector<FragId> jobs_;
   std::vector<std::uint32_t> job_first_;  // (jobs + 1) offsets into job_tets_
   std::vector<std::int32_t> job_tets_;    // pending tets each job's fragment creates

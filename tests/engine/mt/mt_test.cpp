@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "engine/mt/frontier.h"
+#include "engine/mt/tet_error.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::engine {
@@ -120,6 +121,54 @@ TEST(Mt, ValidateCatchesACycle) {
   const TetId t = s.mt.add_tet({VertId(0), VertId(1), VertId(2), VertId(4)}, s.mt.drain(), s.collapse, 0);
   (void)t;
   EXPECT_FALSE(s.mt.validate().ok());
+}
+
+// A cut's pieces (add_piece) live in the fragments of the tet they split and
+// carry its error, so the fragment's error does not move.
+TEST(Mt, PiecesInheritTheirSplitTetsFragmentsAndError) {
+  StarMt s = make_star_mt();
+  const float before = s.mt.fragment_error(s.collapse);
+  const Tet big = s.mt.tet(s.big);
+  std::vector<TetId> pieces;
+  for (int i = 0; i < 4; ++i) {
+    Tet t = big;
+    t[static_cast<std::size_t>(i)] = VertId(4);  // the centroid
+    pieces.push_back(s.mt.add_piece(t, s.big, static_cast<FaceMask>(1u << i)));
+  }
+  const float whole_error = s.mt.error(s.big);
+  s.mt.kill_tet(s.big);
+  const ValidationReport report = s.mt.validate();
+  ASSERT_TRUE(report.ok()) << report.summary();
+  for (TetId p : pieces) {
+    EXPECT_EQ(s.mt.birth(p), s.collapse);
+    EXPECT_EQ(s.mt.death(p), s.mt.drain());
+    EXPECT_TRUE(s.mt.error_inherited(p));
+    EXPECT_EQ(s.mt.error(p), whole_error);
+    const auto c = s.mt.corners(p);
+    EXPECT_LE(tet_error(c[0], c[1], c[2], c[3]), whole_error);  // its own is no larger
+  }
+  EXPECT_EQ(s.mt.fragment_error(s.collapse), before);
+  // A copy keeps the error and where it came from.
+  Mt copy = s.mt;
+  const TetId c = copy.add_copy(s.mt, pieces[0], s.mt.tet(pieces[0]), s.collapse, s.mt.drain());
+  EXPECT_TRUE(copy.error_inherited(c));
+  EXPECT_EQ(copy.error(c), whole_error);
+}
+
+// validate() catches a "piece" that does not lie in the tet it claims to
+// split: its inherited error is below its own.
+TEST(Mt, ValidateRejectsAnInheritedErrorBelowTheTetsOwn) {
+  StarMt s = make_star_mt();
+  const TetId small(1);  // the fine tet without the big one's face (1, 2, 3): a smaller sphere
+  const Tet big = s.mt.tet(s.big);
+  s.mt.kill_tet(s.big);
+  // The big tet again, in the collapse fragment, claiming a small fine tet as its whole.
+  const TetId wrong = s.mt.add_piece(big, small, 0xF);
+  s.mt.set_birth(wrong, s.collapse);
+  s.mt.set_death(wrong, s.mt.drain());
+  const ValidationReport report = s.mt.validate();
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.summary().find("inherited error below its own"), std::string::npos) << report.summary();
 }
 
 }  // namespace
