@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "engine/mesh_loader.h"
 #include "sim/fixed_region.h"
 #include "sim/forces.h"
@@ -12,12 +15,12 @@ namespace {
 
 // A box with its x = +0.05 face fixed, volume terms on, and a state moved
 // off rest (positions and velocities) so every force is at work.
-struct Setup {
+struct MovedBox {
   SpringModel model;
   SpringState state;
 };
 
-Setup setup(double volume_stiffness) {
+MovedBox moved_box(double volume_stiffness) {
   engine::MeshLoadDef def;
   def.builtin_tets = 400;
   def.builtin_size = Vec3(0.1, 0.05, 0.05);
@@ -32,7 +35,7 @@ Setup setup(double volume_stiffness) {
   fixed.kind = FixedRegion::Kind::kHalfSpace;
   fixed.normal = Vec3(-1, 0, 0);
   fixed.offset = -(0.05 - 1e-9);
-  Setup out;
+  MovedBox out;
   out.model = build_spring_model(mesh.tets, mesh.positions, material,
                                  [&](VertId v) { return fixed.contains(v, mesh.position(v)); });
   out.state = rest_state(out.model);
@@ -58,7 +61,7 @@ void plain_substep(const SpringModel& model, const Environment& env, double h, S
 class SymplecticPass : public ::testing::TestWithParam<double> {};
 
 TEST_P(SymplecticPass, MatchesThePlainSubStepToRoundOff) {
-  Setup s = setup(GetParam());
+  MovedBox s = moved_box(GetParam());
   ASSERT_TRUE(springs_in_run_order(s.model));
   Environment env;
   env.floor = Plane{Vec3(0, 0, 1), -0.02};  // cuts through the box: some particles start below it
@@ -79,14 +82,16 @@ TEST_P(SymplecticPass, MatchesThePlainSubStepToRoundOff) {
     EXPECT_LT((pass.x[i] - plain.x[i]).norm(), 1e-13 * x_scale) << i;
     EXPECT_LT((pass.v[i] - plain.v[i]).norm(), 1e-10 * v_scale) << i;
     EXPECT_EQ(acc[i], Vec3::Zero()) << i;  // left zero for the next sub-step
-    if (s.model.inv_mass[i] == 0) EXPECT_EQ(pass.x[i], s.state.x[i]) << i;  // fixed stay put
+    if (s.model.inv_mass[i] == 0) {
+      EXPECT_EQ(pass.x[i], s.state.x[i]) << i;  // fixed stay put
+    }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(WithAndWithoutVolumeTerms, SymplecticPass, ::testing::Values(0.0, 0.5));
 
 TEST(SymplecticPass, RunOrderIsCheckedNotAssumed) {
-  Setup s = setup(0.0);
+  MovedBox s = moved_box(0.0);
   EXPECT_TRUE(springs_in_run_order(s.model));
   SpringModel swapped = s.model;
   std::swap(swapped.spring_a[3], swapped.spring_b[3]);  // a > b
