@@ -43,9 +43,10 @@ StepReport Stepper::step(const SpringModel& model, const Environment& env, const
   const double h = dt / substeps;
   const bool contacts = env.floor.has_value() || (env.tool.has_value() && env.tool->radius > 0);
   const bool one_pass = def.kind == IntegratorKind::kSymplecticEuler && springs_in_run_order(model);
+  if (one_pass) run_pairs_.fill(model);
   for (int k = 0; k < substeps; ++k) {
     if (one_pass) {  // contacts resolved in the same pass
-      symplectic_substep(model, env, contacts, h, state, acc_);
+      symplectic_substep(model, run_pairs_, env, contacts, h, state, acc_);
       continue;
     }
     if (def.kind == IntegratorKind::kSymplecticEuler) {

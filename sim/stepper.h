@@ -24,6 +24,7 @@
 #include "sim/spring_model.h"
 #include "sim/spring_state.h"
 #include "sim/spring_system.h"
+#include "sim/symplectic_pass.h"
 
 namespace mtcut::sim {
 
@@ -74,6 +75,7 @@ class Stepper {
   std::vector<Vec3> f_, saved_x_, saved_v_, dv_, dv_last_, b_;
   // (n_particles) the one-pass explicit sub-step's reactions, all zero between sub-steps.
   std::vector<Vec3> acc_;
+  RunPairs run_pairs_;  // the model's springs in pairs for the one-pass sub-step
   SpringSystem system_;  // the implicit step's linear system and its solvers
 };
 
