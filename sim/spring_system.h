@@ -30,7 +30,8 @@
 //    the springs sorted by spring_a with a < b (build_spring_model's
 //    order); otherwise the solver falls back to block Jacobi.
 // Both stop on the true residual |b - A x|, so they are equally accurate.
-// Scratch is allocated when the model's size changes, never per step.
+// Scratch and the paired layout are rebuilt when the model's springs change
+// (their ends are compared at each assembly, O(n_springs)), never otherwise.
 
 #include <cstdint>
 #include <vector>
@@ -88,7 +89,7 @@ class SpringSystem {
   CgStats solve(PreconditionerKind kind, const std::vector<Vec3>& b, double tolerance2, int max_iterations,
                 std::vector<Vec3>& x);
 
-  // out = A u (n_particles).
+  // out = A u (n_particles). Not const: u is copied into scratch with the pads' dummy.
   void multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out);
 
   // The system's exact diagonal blocks and their inverses (0 at fixed
