@@ -2,6 +2,7 @@
 #include <cmath>
 #include <utility>
 
+#include "sim/contacts.h"
 #include "sim/stepper.h"
 
 namespace mtcut::sim {
@@ -30,6 +31,29 @@ std::pair<Vec3, double> exit_direction(const Vec3& a, const Vec3& b, const Vec3&
 
 }  // namespace
 
+void push_out_of_contacts(const Environment& env, Vec3& x, Vec3& v) {
+  if (env.floor) {
+    const Plane& floor = *env.floor;
+    const double depth = floor.normal.dot(x) - floor.offset;
+    if (depth < 0) {
+      x -= depth * floor.normal;
+      const double vn = floor.normal.dot(v);
+      Vec3 tangential = v - vn * floor.normal;
+      tangential *= 1.0 - env.floor_friction;
+      v = tangential + std::max(vn, 0.0) * floor.normal;
+    }
+  }
+  if (env.tool && env.tool->radius > 0) {
+    const Capsule& tool = *env.tool;
+    const auto [normal, dist] = exit_direction(tool.a, tool.b, x);
+    if (dist < tool.radius) {
+      x += (tool.radius - dist) * normal;
+      const double vn = normal.dot(v);
+      if (vn < 0) v -= vn * normal;
+    }
+  }
+}
+
 void apply_contacts(const SpringModel& model, const Environment& env, SpringState& state) {
   const std::size_t n = model.num_particles();
   for (std::size_t i = 0; i < n; ++i) {
@@ -37,26 +61,7 @@ void apply_contacts(const SpringModel& model, const Environment& env, SpringStat
       state.v[i].setZero();
       continue;
     }
-    if (env.floor) {
-      const Plane& floor = *env.floor;
-      const double depth = floor.normal.dot(state.x[i]) - floor.offset;
-      if (depth < 0) {
-        state.x[i] -= depth * floor.normal;
-        const double vn = floor.normal.dot(state.v[i]);
-        Vec3 tangential = state.v[i] - vn * floor.normal;
-        tangential *= 1.0 - env.floor_friction;
-        state.v[i] = tangential + std::max(vn, 0.0) * floor.normal;
-      }
-    }
-    if (env.tool && env.tool->radius > 0) {
-      const Capsule& tool = *env.tool;
-      const auto [normal, dist] = exit_direction(tool.a, tool.b, state.x[i]);
-      if (dist < tool.radius) {
-        state.x[i] += (tool.radius - dist) * normal;
-        const double vn = normal.dot(state.v[i]);
-        if (vn < 0) state.v[i] -= vn * normal;
-      }
-    }
+    push_out_of_contacts(env, state.x[i], state.v[i]);
   }
 }
 

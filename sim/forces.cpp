@@ -8,9 +8,6 @@
 #include "engine/tet_geometry.h"
 
 namespace mtcut::sim {
-namespace {
-
-// Adds the volume-preserving forces: -kappa (V - V0) / V0 * dV/dx_i.
 void add_volume_forces(const SpringModel& model, const SpringState& state, std::vector<Vec3>& f) {
   for (std::size_t t = 0; t < model.tet_particles.size(); ++t) {
     const auto& p = model.tet_particles[t];
@@ -27,8 +24,6 @@ void add_volume_forces(const SpringModel& model, const SpringState& state, std::
     f[p[0]] -= pressure * (g1 + g2 + g3);
   }
 }
-
-}  // namespace
 
 void compute_forces(const SpringModel& model, const Environment& env, const SpringState& state,
                     std::vector<Vec3>& f) {

@@ -20,6 +20,10 @@ void compute_forces(const SpringModel& model, const Environment& env, const Spri
 void compute_body_forces(const SpringModel& model, const Environment& env, const SpringState& state,
                          std::vector<Vec3>& f);
 
+// Adds the volume-preserving forces of the tets (model.tet_particles) to f
+// (n_particles): -volume_modulus (V - V0) / V0 dV/dx_i.
+void add_volume_forces(const SpringModel& model, const SpringState& state, std::vector<Vec3>& f);
+
 // Kinetic + elastic (springs and volume terms) + gravitational potential.
 double total_energy(const SpringModel& model, const Environment& env, const SpringState& state);
 

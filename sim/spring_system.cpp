@@ -36,11 +36,25 @@ Sym3 Sym3::inverse() const {
   return {cxx * inv_det, cxy * inv_det, cxz * inv_det, cyy * inv_det, cyz * inv_det, czz * inv_det};
 }
 
-void SpringSystem::resize(std::size_t n, std::size_t m) {
-  blocks_.resize(m);
-  row_.resize(n + 1);
+void SpringSystem::resize(std::size_t n, std::size_t) {
   for (auto* v : {&own_, &diag_, &diag_inverse_}) v->resize(n);
-  for (auto* v : {&r_, &rhat_, &z_, &p_, &t_, &ut_, &q_, &acc_}) v->resize(n);
+  for (auto* v : {&rhat_, &t_, &s_, &u_}) v->assign(n + 1, Vec3::Zero());  // [n] = 0: the pads' dummy
+  for (auto* v : {&r_, &z_, &p_, &ut_, &q_}) v->resize(n);
+}
+
+void SpringSystem::update_layout(const SpringModel& model) {
+  const std::size_t n = model.num_particles(), m = model.num_springs();
+  if (layout_n_ == n && layout_a_ == model.spring_a && layout_b_ == model.spring_b) return;
+  resize(n, m);
+  layout_n_ = n;
+  layout_a_ = model.spring_a;
+  layout_b_ = model.spring_b;
+  rows_sorted_ = true;
+  for (std::size_t s = 0; s < m; ++s)
+    if (model.spring_a[s] >= model.spring_b[s] || (s > 0 && model.spring_a[s - 1] > model.spring_a[s]))
+      rows_sorted_ = false;
+  rows_.build(n, model.spring_a, model.spring_b);
+  cols_.build(n, model.spring_b, model.spring_a);
 }
 
 // b = h (f0 + h K v0), K v0 = -sum_s J_s (v_a - v_b), J_s = k (n n^T + t (I - n n^T)).
@@ -49,9 +63,7 @@ void SpringSystem::resize(std::size_t n, std::size_t m) {
 void SpringSystem::assemble(const SpringModel& model, const SpringState& state, const std::vector<Vec3>& f, double h,
                             std::vector<Vec3>& b) {
   const std::size_t n = model.num_particles(), m = model.num_springs();
-  resize(n, m);
-  spring_a_ = model.spring_a.data();
-  spring_b_ = model.spring_b.data();
+  update_layout(model);
   const double h2 = h * h;
 
   const double mass_factor = 1.0 + h * model.mass_damping;
@@ -62,26 +74,22 @@ void SpringSystem::assemble(const SpringModel& model, const SpringState& state, 
     b[i] = h * f[i];
   }
 
-  // One pass over the springs: B_s into the diagonal blocks, g_s into b;
-  // springs at fixed particles masked; each particle's first spring found.
-  // A run of springs with the same first particle a sums its share of a's
-  // diagonal block and b in registers (not through memory, spring after
-  // spring: a chain of stores and reloads).
+  // One pass over the springs: B_s into the diagonal blocks and the paired
+  // layout, g_s into b; springs at fixed particles masked. A run of springs
+  // with the same first particle a sums its share of a's diagonal block and
+  // b in registers (not through memory, spring after spring: a chain of
+  // stores and reloads).
+  const std::int32_t *spring_a = model.spring_a.data(), *spring_b = model.spring_b.data();
   const Vec3 *x = state.x.data(), *v = state.v.data();
   const double *rest = model.rest_length.data(), *stiffness = model.stiffness.data(), *damping = model.damping.data();
-  SpringBlock* blocks = blocks_.data();
-  rows_sorted_ = true;
-  std::size_t row = 0;  // the next particle whose springs have not begun
   for (std::size_t s = 0; s < m;) {
-    const auto a = spring_a_[s];
-    if (static_cast<std::size_t>(a) + 1 < row) rows_sorted_ = false;
-    while (row <= static_cast<std::size_t>(a)) row_[row++] = static_cast<std::int32_t>(s);
+    const auto a = spring_a[s];
     const Vec3 xa = x[a], va = v[a];
     const bool a_fixed = inv_mass[a] == 0;
     Sym3 diag_a{};
     Vec3 b_a = Vec3::Zero();
-    for (; s < m && spring_a_[s] == a; ++s) {
-      const auto c = spring_b_[s];
+    for (; s < m && spring_a[s] == a; ++s) {
+      const auto c = spring_b[s];
       const Vec3 d = x[c] - xa;
       // Branch-free (a branch on the sign of t, which flips spring to
       // spring, mispredicts half the time and stalls the pipeline):
@@ -107,12 +115,12 @@ void SpringSystem::assemble(const SpringModel& model, const SpringState& state, 
         if (inv_mass[c] != 0) add_block(own_[c], blk);
         blk = SpringBlock{};
       }
-      blocks[s] = blk;
+      rows_.set(s, blk.w, blk.across);
+      cols_.set(s, blk.w, blk.across);
     }
     b[a] += b_a;
     add_sym(diag_[a], diag_a);
   }
-  while (row <= n) row_[row++] = static_cast<std::int32_t>(m);
   for (std::size_t i = 0; i < n; ++i) {
     if (inv_mass[i] == 0) {
       b[i].setZero();
@@ -123,20 +131,15 @@ void SpringSystem::assemble(const SpringModel& model, const SpringState& state, 
   }
 }
 
-void SpringSystem::multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out) const {
-  const std::size_t n = own_.size(), m = blocks_.size();
-  for (std::size_t i = 0; i < n; ++i) out[i] = own_[i] * u[i];
-  for (std::size_t s = 0; s < m;) {  // runs of springs with the same first particle, as in assemble
-    const auto a = spring_a_[s];
-    const Vec3 ua = u[a];
-    Vec3 out_a = Vec3::Zero();
-    for (; s < m && spring_a_[s] == a; ++s) {
-      const auto c = spring_b_[s];
-      const Vec3 t = blocks_[s] * (ua - u[c]);
-      out_a += t;
-      out[c] -= t;
-    }
-    out[a] += out_a;
+// (A u)_i = own_i u_i + sum over i's springs of B_s (u_i - u_o) = own_i u_i
+// + (sum B_s) u_i - pulls, with sum B_s = diag_i - own_i (masked springs
+// are 0 in the layout and in own_, not in diag_, at their fixed end).
+void SpringSystem::multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out) {
+  const std::size_t n = own_.size();
+  std::copy(u.begin(), u.begin() + static_cast<std::ptrdiff_t>(n), u_.begin());  // u_[n] stays 0
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 self = diag_inverse_[i].xx == 0 ? Vec3(own_[i] * u_[i]) : Vec3(diag_[i] * u_[i]);
+    out[i] = self - rows_.pull(i, u_.data()) - cols_.pull(i, u_.data());
   }
 }
 
@@ -190,8 +193,9 @@ CgStats SpringSystem::solve_block_jacobi(const std::vector<Vec3>& b, double tole
 // D rhat): PCG on A with M ~ W D^-1 W^T. Eisenstat: with t = W^-T p (backward
 // sweep), Ahat p = t + W^-1 (p - (2 / w - 1) D t) (forward sweep), and
 // x = W^-T xhat moves by alpha t. Off-diagonal blocks are -B_s, so with
-// sum_i = sum B_s t_b over i's springs, t_i = w D_i^-1 (p_i + sum_i) and
-// (p - (2 / w - 1) D t)_i = (w - 1) p_i - (2 - w) sum_i.
+// sum_i = sum B_s t_o over i's row (o > i), t_i = w D_i^-1 (p_i + sum_i) and
+// (p - (2 / w - 1) D t)_i = (w - 1) p_i - (2 - w) sum_i; the forward sweep
+// pulls over i's column (o < i) what W^-1 gave the earlier particles.
 //
 // The true residual r = W rhat = D rhat / w + L rhat costs a sweep, so it is
 // computed only when rhat . D rhat, scaled by the ratio |r|^2 / rhat . D rhat
@@ -199,35 +203,29 @@ CgStats SpringSystem::solve_block_jacobi(const std::vector<Vec3>& b, double tole
 CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tolerance2, int max_iterations,
                                          std::vector<Vec3>& x_vec) {
   const std::size_t n = own_.size();
-  const SpringBlock* blk = blocks_.data();
-  const std::int32_t* row = row_.data();
-  const std::int32_t* other = spring_b_;
   const Sym3* diag = diag_.data();
   const Sym3* dinv = diag_inverse_.data();
+  // rhat, t and s (the forward sweep's W^-1 (...)) are pulled from: n + 1 entries, the last 0.
   Vec3 *x = x_vec.data(), *rhat = rhat_.data(), *z = z_.data(), *p = p_.data(), *t = t_.data(), *ut = ut_.data(),
-       *q = q_.data(), *acc = acc_.data();
+       *q = q_.data(), *sv = s_.data();
 
-  // The true residual |W rhat|^2; leaves acc at 0.
+  // The true residual |W rhat|^2, (W rhat)_i = D_i rhat_i / w - sum of i's
+  // column blocks times rhat at their other ends.
   const auto true_residual2 = [&] {
     double rr = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 r = z[i] * (1 / kRelaxation) - acc[i];
-      acc[i].setZero();
+      const Vec3 r = z[i] * (1 / kRelaxation) - cols_.pull(i, rhat);
       rr += r.squaredNorm();
-      for (std::int32_t s = row[i]; s < row[i + 1]; ++s) acc[other[s]] += blk[s] * rhat[i];
     }
     return rr;
   };
 
   multiply(x_vec, q_);
   double rr = 0, rz = 0;
-  std::fill(acc_.begin(), acc_.end(), Vec3::Zero());
   for (std::size_t i = 0; i < n; ++i) {  // rhat = W^-1 r, r = b - A x
     const Vec3 r = b[i] - q[i];
     rr += r.squaredNorm();
-    rhat[i] = dinv[i] * (kRelaxation * (r + acc[i]));
-    acc[i].setZero();
-    for (std::int32_t s = row[i]; s < row[i + 1]; ++s) acc[other[s]] += blk[s] * rhat[i];
+    rhat[i] = dinv[i] * (kRelaxation * (r + cols_.pull(i, rhat)));
     z[i] = diag[i] * rhat[i];
     p[i] = z[i];
     rz += rhat[i].dot(z[i]);
@@ -246,19 +244,17 @@ CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tole
       if (rr <= tolerance2) break;
     }
     for (std::size_t i = n; i-- > 0;) {  // p = z + beta p; t = W^-T p
-      Vec3 sum = Vec3::Zero();
-      for (std::int32_t s = row[i]; s < row[i + 1]; ++s) sum += blk[s] * t[other[s]];
+      const Vec3 sum = rows_.pull(i, t);
       ut[i] = sum;
       p[i] = z[i] + beta * p[i];
       t[i] = dinv[i] * (kRelaxation * (p[i] + sum));
     }
     double pq = 0;
     for (std::size_t i = 0; i < n; ++i) {  // q = Ahat p = t + W^-1 (p - (2 / w - 1) D t)
-      const Vec3 s_i = dinv[i] * (kRelaxation * (acc[i] + (kRelaxation - 1) * p[i] - (2 - kRelaxation) * ut[i]));
-      acc[i].setZero();
-      q[i] = t[i] + s_i;
+      const Vec3 acc = cols_.pull(i, sv);
+      sv[i] = dinv[i] * (kRelaxation * (acc + (kRelaxation - 1) * p[i] - (2 - kRelaxation) * ut[i]));
+      q[i] = t[i] + sv[i];
       pq += p[i].dot(q[i]);
-      for (std::int32_t s = row[i]; s < row[i + 1]; ++s) acc[other[s]] += blk[s] * s_i;
     }
     if (!(pq > 0)) break;  // converged to round-off
     const double alpha = rz / pq;

@@ -24,17 +24,20 @@
 //    off-diagonal blocks in particle order, applied with Eisenstat's trick
 //    (CG on W^-1 A W^-T, W = D / w + L): one backward and one forward sweep
 //    over the springs per iteration, about the cost of a product with A,
-//    for well under half the iterations. The sweeps walk the
-//    springs grouped by their first particle, so they need the springs
-//    sorted by spring_a (build_spring_model sorts them); otherwise the
-//    solver falls back to block Jacobi.
+//    for well under half the iterations. The sweeps pull each particle's
+//    sum from its springs to later particles (backward) or to earlier ones
+//    (forward), laid out in pairs both ways (sim/spring_pairs.h); they need
+//    the springs sorted by spring_a with a < b (build_spring_model's
+//    order); otherwise the solver falls back to block Jacobi.
 // Both stop on the true residual |b - A x|, so they are equally accurate.
-// Scratch is allocated when the model's size changes, never per step.
+// Scratch and the paired layout are rebuilt when the model's springs change
+// (their ends are compared at each assembly, O(n_springs)), never otherwise.
 
 #include <cstdint>
 #include <vector>
 
 #include "sim/spring_model.h"
+#include "sim/spring_pairs.h"
 #include "sim/spring_state.h"
 
 namespace mtcut::sim {
@@ -86,8 +89,8 @@ class SpringSystem {
   CgStats solve(PreconditionerKind kind, const std::vector<Vec3>& b, double tolerance2, int max_iterations,
                 std::vector<Vec3>& x);
 
-  // out = A u (n_particles).
-  void multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out) const;
+  // out = A u (n_particles). Not const: u is copied into scratch with the pads' dummy.
+  void multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out);
 
   // The system's exact diagonal blocks and their inverses (0 at fixed
   // particles), for tests.
@@ -99,19 +102,23 @@ class SpringSystem {
   CgStats solve_block_jacobi(const std::vector<Vec3>& b, double tolerance2, int max_iterations, std::vector<Vec3>& x);
   CgStats solve_gauss_seidel(const std::vector<Vec3>& b, double tolerance2, int max_iterations, std::vector<Vec3>& x);
   void resize(std::size_t n, std::size_t m);
+  // Lays the springs out in pairs when their ends changed since the last call.
+  void update_layout(const SpringModel& model);
 
-  // (n_springs) the springs' ends (the model's) and their masked blocks.
-  const std::int32_t* spring_a_ = nullptr;
-  const std::int32_t* spring_b_ = nullptr;
-  std::vector<SpringBlock> blocks_;
-  // (n_particles + 1) springs of particle i as first end: [row_[i], row_[i + 1]).
-  std::vector<std::int32_t> row_;
+  // The springs' ends the layout was built for (n_springs each).
+  std::vector<std::int32_t> layout_a_, layout_b_;
+  std::size_t layout_n_ = 0;
+  // The springs' masked blocks by first particle (rows: the other end is
+  // later) and by second particle (columns: the other end is earlier).
+  PairedSide rows_, cols_;
   bool rows_sorted_ = false;
   // (n_particles) the mass term plus masked springs' blocks (what the
   // per-spring form of A misses), the full diagonal blocks, their inverses.
   std::vector<Sym3> own_, diag_, diag_inverse_;
-  // (n_particles) CG scratch.
-  std::vector<Vec3> r_, rhat_, z_, p_, t_, ut_, q_, acc_;
+  // CG scratch: (n_particles + 1, the last entry the pads' dummy, kept 0)
+  // for the vectors the sweeps pull from, (n_particles) for the others.
+  std::vector<Vec3> rhat_, t_, s_, u_;
+  std::vector<Vec3> r_, z_, p_, ut_, q_;
 };
 
 }  // namespace mtcut::sim

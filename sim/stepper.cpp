@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/forces.h"
+#include "sim/symplectic_pass.h"
 
 namespace mtcut::sim {
 namespace {
@@ -26,6 +27,7 @@ void Stepper::resize(const SpringModel& model) {
     dv_last_.assign(n, Vec3::Zero());
   }
   for (auto* v : {&f_, &saved_x_, &saved_v_, &b_}) v->resize(n);
+  if (acc_.size() != n) acc_.assign(n, Vec3::Zero());
 }
 
 StepReport Stepper::step(const SpringModel& model, const Environment& env, const IntegratorDef& def,
@@ -40,7 +42,13 @@ StepReport Stepper::step(const SpringModel& model, const Environment& env, const
   const int substeps = std::max(1, def.substeps);
   const double h = dt / substeps;
   const bool contacts = env.floor.has_value() || (env.tool.has_value() && env.tool->radius > 0);
+  const bool one_pass = def.kind == IntegratorKind::kSymplecticEuler && springs_in_run_order(model);
+  if (one_pass) run_pairs_.fill(model);
   for (int k = 0; k < substeps; ++k) {
+    if (one_pass) {  // contacts resolved in the same pass
+      symplectic_substep(model, run_pairs_, env, contacts, h, state, acc_);
+      continue;
+    }
     if (def.kind == IntegratorKind::kSymplecticEuler) {
       substep_symplectic(model, env, state, h);
     } else {

@@ -6,7 +6,8 @@
 //
 // Two integrators:
 //  - symplectic Euler, explicit, with sub-steps: the fast baseline, stable
-//    for dt below ~ sqrt(m / k) of the stiffest spring;
+//    for dt below ~ sqrt(m / k) of the stiffest spring; one pass over the
+//    springs per sub-step when they are in run order (sim/symplectic_pass.h);
 //  - implicit Euler (Baraff & Witkin 1998): one Newton step of the backward
 //    Euler equations, (M - h D - h^2 K) dv = h (f + h K v), solved by a
 //    matrix-free preconditioned conjugate gradient (sim/spring_system.h:
@@ -23,6 +24,7 @@
 #include "sim/spring_model.h"
 #include "sim/spring_state.h"
 #include "sim/spring_system.h"
+#include "sim/symplectic_pass.h"
 
 namespace mtcut::sim {
 
@@ -71,6 +73,9 @@ class Stepper {
   // Scratch (n_particles): forces, saved state, the implicit step's dv, the
   // one before (the warm start extrapolates them) and right-hand side.
   std::vector<Vec3> f_, saved_x_, saved_v_, dv_, dv_last_, b_;
+  // (n_particles) the one-pass explicit sub-step's reactions, all zero between sub-steps.
+  std::vector<Vec3> acc_;
+  RunPairs run_pairs_;  // the model's springs in pairs for the one-pass sub-step
   SpringSystem system_;  // the implicit step's linear system and its solvers
 };
 

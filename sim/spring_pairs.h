@@ -1,0 +1,75 @@
+#pragma once
+// The implicit system's spring blocks laid out for the Gauss-Seidel sweeps:
+// each particle's springs in pairs, twice over.
+//
+// Why this shape. A sweep visits the particles in order and sums, for
+// particle i, B_s u_o over the springs s = (i, o) on one side of i: its
+// "row" (o > i, the backward sweep) or its "column" (o < i, the forward
+// sweep). Pulling both ways from a copy of the blocks ordered each way
+// keeps every sum in registers (pushing B_s u_i into the other end instead
+// is a scatter through memory, spring after spring). Two springs go side by
+// side in the two lanes of an SSE2 register (x86-64's baseline, so the same
+// code and results on every x86-64 machine): a particle's springs are padded
+// to an even count with a zero block whose other end is the dummy particle
+// n, which every vector the sweeps read keeps at 0.
+//
+// The layout (starts, other ends, slot of each spring) depends only on the
+// springs' ends; it is rebuilt when they change, the blocks every assembly.
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/predicates.h"
+
+namespace mtcut::sim {
+
+using engine::Vec3;
+
+// Two lanes of doubles (GCC/Clang vector extension: SSE2 on x86-64).
+using Lanes2 = double __attribute__((vector_size(16)));
+
+// Two springs' blocks B = w w^T + across I, lane by lane.
+struct BlockPair {
+  Lanes2 wx, wy, wz, across;
+};
+
+// One side (rows or columns) of the paired layout.
+struct PairedSide {
+  std::vector<std::int32_t> start;  // (n + 1) particle i's pairs: [start[i], start[i + 1])
+  std::vector<std::int32_t> other;  // (2 n_pairs) each lane's other end; n for a pad
+  std::vector<BlockPair> blocks;    // (n_pairs) the blocks; pads stay 0
+  std::vector<std::int32_t> slot;   // (n_springs) spring s's lane: pair slot / 2, lane slot % 2
+
+  // Lays out n particles' springs, spring s belonging to particle key[s]
+  // with other end other_end[s]; blocks all 0.
+  void build(std::size_t n, const std::vector<std::int32_t>& key, const std::vector<std::int32_t>& other_end);
+
+  // Writes spring s's block.
+  void set(std::size_t s, const Vec3& w, double across) {
+    const std::int32_t k = slot[s];
+    BlockPair& p = blocks[static_cast<std::size_t>(k >> 1)];
+    const int lane = k & 1;
+    p.wx[lane] = w.x();
+    p.wy[lane] = w.y();
+    p.wz[lane] = w.z();
+    p.across[lane] = across;
+  }
+
+  // sum over particle i's springs of B_s u[o_s]. u has n + 1 entries, u[n] = 0.
+  Vec3 pull(std::size_t i, const Vec3* u) const {
+    Lanes2 sx = {0, 0}, sy = {0, 0}, sz = {0, 0};
+    const std::int32_t* o = other.data();
+    for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
+      const Vec3 &u0 = u[o[2 * k]], &u1 = u[o[2 * k + 1]];
+      const Lanes2 ux = {u0.x(), u1.x()}, uy = {u0.y(), u1.y()}, uz = {u0.z(), u1.z()};
+      const BlockPair& b = blocks[static_cast<std::size_t>(k)];
+      const Lanes2 dot = b.wx * ux + b.wy * uy + b.wz * uz;
+      sx += b.across * ux + dot * b.wx;
+      sy += b.across * uy + dot * b.wy;
+      sz += b.across * uz + dot * b.wz;
+    }
+    return {sx[0] + sx[1], sy[0] + sy[1], sz[0] + sz[1]};
+  }
+};
+
+}  // namespace mtcut::sim
