@@ -6,9 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "engine/mesh_loader.h"
-#include "sim/fixed_region.h"
 #include "sim/forces.h"
+#include "tests/sim/test_box.h"
 
 namespace mtcut::sim {
 namespace {
@@ -22,22 +21,8 @@ struct Stretched {
 };
 
 Stretched stretched_box(bool shuffle) {
-  engine::MeshLoadDef def;
-  def.builtin_tets = 400;
-  def.builtin_size = Vec3(0.1, 0.05, 0.05);
-  const engine::TetMesh mesh = engine::load_mesh("builtin:box", def).mesh;
-  MaterialDef material;
-  material.youngs_modulus = 1e5;
-  material.density = 1000;
-  material.stiffness_damping = 0.002;
-  material.mass_damping = 2.0;
-  FixedRegion fixed;
-  fixed.kind = FixedRegion::Kind::kHalfSpace;
-  fixed.normal = Vec3(-1, 0, 0);
-  fixed.offset = -(0.05 - 1e-9);
   Stretched s;
-  s.model = build_spring_model(mesh.tets, mesh.positions, material,
-                               [&](VertId v) { return fixed.contains(v, mesh.position(v)); });
+  s.model = test::fixed_test_box();
   if (shuffle) {
     std::vector<std::size_t> order(s.model.num_springs());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;

@@ -5,10 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/mesh_loader.h"
-#include "sim/fixed_region.h"
 #include "sim/forces.h"
 #include "sim/stepper.h"
+#include "tests/sim/test_box.h"
 
 namespace mtcut::sim {
 namespace {
@@ -21,23 +20,8 @@ struct MovedBox {
 };
 
 MovedBox moved_box(double volume_stiffness) {
-  engine::MeshLoadDef def;
-  def.builtin_tets = 400;
-  def.builtin_size = Vec3(0.1, 0.05, 0.05);
-  const engine::TetMesh mesh = engine::load_mesh("builtin:box", def).mesh;
-  MaterialDef material;
-  material.youngs_modulus = 1e5;
-  material.density = 1000;
-  material.stiffness_damping = 0.002;
-  material.mass_damping = 2.0;
-  material.volume_stiffness = volume_stiffness;
-  FixedRegion fixed;
-  fixed.kind = FixedRegion::Kind::kHalfSpace;
-  fixed.normal = Vec3(-1, 0, 0);
-  fixed.offset = -(0.05 - 1e-9);
   MovedBox out;
-  out.model = build_spring_model(mesh.tets, mesh.positions, material,
-                                 [&](VertId v) { return fixed.contains(v, mesh.position(v)); });
+  out.model = test::fixed_test_box(volume_stiffness);
   out.state = rest_state(out.model);
   for (std::size_t i = 0; i < out.model.num_particles(); ++i) {
     const double u = static_cast<double>(i);
