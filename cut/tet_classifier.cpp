@@ -131,17 +131,22 @@ void CutClassifier::veto(VertId v) {
   info_[v.index()].requested_off = true;
 }
 
-bool CutClassifier::may_be_cut(const Tet& tet) const {
+std::array<std::int8_t, 4> CutClassifier::crossing_sides(const Tet& tet) const {
   std::array<std::int8_t, 4> s;
   for (int i = 0; i < 4; ++i) s[i] = side_for_crossings(tet[i]);
-  return !(s[0] != 0 && s[0] == s[1] && s[1] == s[2] && s[2] == s[3]);
+  return s;
 }
+
+bool CutClassifier::one_sided(const std::array<std::int8_t, 4>& s) {
+  return s[0] != 0 && s[0] == s[1] && s[1] == s[2] && s[2] == s[3];
+}
+
+bool CutClassifier::may_be_cut(const Tet& tet) const { return !one_sided(crossing_sides(tet)); }
 
 bool CutClassifier::add_candidate(const Tet& tet) {
   assert(!finalized_);
-  std::array<std::int8_t, 4> s;
-  for (int i = 0; i < 4; ++i) s[i] = side_for_crossings(tet[i]);
-  if (s[0] != 0 && s[0] == s[1] && s[1] == s[2] && s[2] == s[3]) return false;  // as may_be_cut
+  const std::array<std::int8_t, 4> s = crossing_sides(tet);
+  if (one_sided(s)) return false;
 
   std::array<double, 4> d;
   for (int i = 0; i < 4; ++i) d[i] = polygon_.signed_distance(positions_[tet[i].index()]);

@@ -168,6 +168,9 @@ class CutClassifier {
   static std::uint64_t edge_key(VertId a, VertId b);
   std::int8_t raw_side(VertId v) const;
   std::int8_t side_for_crossings(VertId v) const;
+  // side_for_crossings of each vertex; all strictly on one side.
+  std::array<std::int8_t, 4> crossing_sides(const Tet& tet) const;
+  static bool one_sided(const std::array<std::int8_t, 4>& sides);
   double raw_parameter(VertId a, VertId b) const;
   void keep_off(VertId v);
   // The two ends of the face's section segment (point, weights on `face`,

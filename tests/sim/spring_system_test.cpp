@@ -23,19 +23,7 @@ struct Stretched {
 Stretched stretched_box(bool shuffle) {
   Stretched s;
   s.model = test::fixed_test_box();
-  if (shuffle) {
-    std::vector<std::size_t> order(s.model.num_springs());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::shuffle(order.begin(), order.end(), std::mt19937(11));
-    const SpringModel m = s.model;
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      s.model.spring_a[k] = m.spring_a[order[k]];
-      s.model.spring_b[k] = m.spring_b[order[k]];
-      s.model.rest_length[k] = m.rest_length[order[k]];
-      s.model.stiffness[k] = m.stiffness[order[k]];
-      s.model.damping[k] = m.damping[order[k]];
-    }
-  }
+  if (shuffle) test::shuffle_springs(s.model, 11);
   s.state = rest_state(s.model);
   for (auto& x : s.state.x) x *= 1.05;
   return s;

@@ -12,6 +12,7 @@
 #include "sim/fixed_region.h"
 #include "sim/forces.h"
 #include "sim/spring_system.h"
+#include "tests/sim/test_box.h"
 
 namespace mtcut::sim {
 namespace {
@@ -197,27 +198,9 @@ struct SystemCase {
 };
 
 SystemCase system_case(bool shuffle_springs) {
-  const engine::TetMesh mesh = box_mesh(400, Vec3(0.1, 0.05, 0.05));
-  FixedRegion fixed;
-  fixed.kind = FixedRegion::Kind::kHalfSpace;
-  fixed.normal = Vec3(-1, 0, 0);
-  fixed.offset = -(0.05 - 1e-9);
   SystemCase c;
-  c.model = build_spring_model(mesh.tets, mesh.positions, stiff_material(),
-                               [&](VertId v) { return fixed.contains(v, mesh.position(v)); });
-  if (shuffle_springs) {  // a hand-built order: not grouped by first particle
-    std::vector<std::size_t> order(c.model.num_springs());
-    std::iota(order.begin(), order.end(), 0);
-    std::shuffle(order.begin(), order.end(), std::mt19937(5));
-    const SpringModel m = c.model;
-    for (std::size_t s = 0; s < order.size(); ++s) {
-      c.model.spring_a[s] = m.spring_a[order[s]];
-      c.model.spring_b[s] = m.spring_b[order[s]];
-      c.model.rest_length[s] = m.rest_length[order[s]];
-      c.model.stiffness[s] = m.stiffness[order[s]];
-      c.model.damping[s] = m.damping[order[s]];
-    }
-  }
+  c.model = test::fixed_test_box();
+  if (shuffle_springs) test::shuffle_springs(c.model, 5);  // a hand-built order: not grouped by first particle
   EXPECT_TRUE(c.model.validate().ok());
   EXPECT_GT(c.model.num_fixed(), 0u);
   c.state = rest_state(c.model);
