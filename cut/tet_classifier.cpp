@@ -153,7 +153,7 @@ bool CutClassifier::add_candidate(const Tet& tet) {
   for (int i = 0; i < 4; ++i) {
     VertexInfo& info = info_[tet[i].index()];
     if (info.reach == 0) touched_.push_back(tet[i]);
-    if (s[i] == 0) info.on = true;  // vetoed vertices on the plane count as positive (s = 1)
+    if (s[i] == 0) put_on(tet[i]);  // vetoed vertices on the plane count as positive (s = 1)
     for (int j = 0; j < 4; ++j)
       if (j != i) info.lean += d[j];
   }
@@ -171,10 +171,24 @@ bool CutClassifier::add_candidate(const Tet& tet) {
     if (fresh) it->second.t = raw_parameter(a, b);
     const double t = it->second.t;
     const VertId lo = a < b ? a : b, hi = a < b ? b : a;
-    if (t < snap_ && !info_[lo.index()].vetoed) info_[lo.index()].on = true;
-    if (t > 1 - snap_ && !info_[hi.index()].vetoed) info_[hi.index()].on = true;
+    if (t < snap_ && !info_[lo.index()].vetoed) put_on(lo);
+    if (t > 1 - snap_ && !info_[hi.index()].vetoed) put_on(hi);
   }
   return true;
+}
+
+void CutClassifier::put_on(VertId v) {
+  VertexInfo& info = info_[v.index()];
+  if (info.on) return;
+  info.on = true;
+  new_on_.push_back(v);
+}
+
+std::vector<VertId> CutClassifier::take_new_on_vertices() {
+  assert(!finalized_);
+  std::vector<VertId> out;
+  out.swap(new_on_);
+  return out;
 }
 
 void CutClassifier::keep_off(VertId v) {

@@ -109,6 +109,13 @@ class CutClassifier {
   // What add_candidate would return, with no effect: a search can drop the
   // tets that cannot be cut before it sorts the rest (after phase 0).
   bool may_be_cut(const Tet& tet) const;
+  // Phase 1: the vertices that the candidates so far put on the cut (on the
+  // plane, or snapped), each returned once, in the order they were met. The
+  // cut may pass through them, so every tet around them must be classified:
+  // a search adds those tets as candidates, until none is returned.
+  std::vector<VertId> take_new_on_vertices();
+  // Phase 1: `v` is on the cut so far (finalize() may still keep it off).
+  bool on_so_far(VertId v) const { return info_[v.index()].on; }
   // Phase 2: fixes the state of every vertex.
   void finalize();
 
@@ -173,6 +180,7 @@ class CutClassifier {
   static bool one_sided(const std::array<std::int8_t, 4>& sides);
   double raw_parameter(VertId a, VertId b) const;
   void keep_off(VertId v);
+  void put_on(VertId v);  // phase 1: marks v on (recorded in new_on_)
   // The two ends of the face's section segment (point, weights on `face`,
   // active), or false when the face is not crossed by the plane.
   struct SectionEnd {
@@ -190,6 +198,7 @@ class CutClassifier {
   mutable std::vector<VertexInfo> info_;  // (n_vertices)
   mutable absl::flat_hash_map<std::uint64_t, EdgeInfo> edges_;  // straddling edges met so far
   std::vector<VertId> touched_;            // vertices of candidates
+  std::vector<VertId> new_on_;             // put on since take_new_on_vertices()
   std::vector<VertId> on_vertices_;
   std::vector<VertId> resided_;
 };

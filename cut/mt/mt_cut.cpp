@@ -82,43 +82,16 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
   box.hi = polygon_.box_max() + Vec3::Constant(margin);
 
   // Tets with every vertex strictly on one side are dropped before the sort
-  // (a cut through the whole object finds every tet); those among them that
-  // hold a vertex the cut passes through come back below.
+  // (a cut through the whole object finds every tet).
   std::vector<TetId> found;
   bvh.for_each_overlapping(mt, box, [&](TetId t) {
     if (classifier_.may_be_cut(mt.tet(t))) found.push_back(t);
     return true;
   });
   std::sort(found.begin(), found.end());  // BVH order must not leak into the result
-  std::vector<std::uint8_t> candidate(found.size(), 0);
-  for (std::size_t i = 0; i < found.size(); ++i) candidate[i] = classifier_.add_candidate(mt.tet(found[i]));
+  for (TetId t : found) classifier_.add_candidate(mt.tet(t));
+  add_tets_around_on_vertices(mt, bvh, found);
   classifier_.finalize();
-  // A vertex the cut passes through may lie off the polygon's box (up to the
-  // classifier's margin); every tet holding it must move onto its copy, so
-  // add the tets around each such vertex (they are not candidates: one that
-  // the cut crosses overlaps the polygon's box and was found already).
-  {
-    // One walk over the box of all such vertices (a point query per vertex
-    // costs a walk each, and a progressive cut continuing the last one in
-    // its plane splits hundreds of vertices).
-    std::vector<TetId> around;
-    engine::Aabb at;
-    for (VertId v : classifier_.on_vertices())
-      if (classifier_.state(v) == VertexState::kOnActive) at.extend(mt.position(v));
-    if (!at.empty())
-      bvh.for_each_overlapping(mt, at, [&](TetId t) {
-        const Tet& tet = mt.tet(t);
-        if (std::any_of(tet.begin(), tet.end(), [&](VertId v) { return classifier_.state(v) == VertexState::kOnActive; }))
-          around.push_back(t);
-        return true;
-      });
-    std::sort(around.begin(), around.end());
-    around.erase(std::unique(around.begin(), around.end()), around.end());
-    std::vector<TetId> extra;
-    std::set_difference(around.begin(), around.end(), found.begin(), found.end(), std::back_inserter(extra));
-    found.insert(found.end(), extra.begin(), extra.end());
-    candidate.resize(found.size(), 0);
-  }
 
   if (table.scheme() != def_.scheme) throw std::invalid_argument("MtCut: the split table is for another scheme");
   // Which tets change, and their pieces over vertex ids (new points are
@@ -126,11 +99,22 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
   first_vertex_ = mt.num_vertices();
   std::vector<TetConfig> configs(found.size());
   std::vector<std::uint8_t> split(found.size(), 0);
+  std::vector<std::uint8_t> positive(found.size(), 0);  // not split, on the positive side
   for (std::size_t i = 0; i < found.size(); ++i) {
-    if (!candidate[i]) continue;
-    configs[i] = classifier_.configure(mt.tet(found[i]));
+    const Tet& tet = mt.tet(found[i]);
+    configs[i] = classifier_.configure(tet);
     split[i] = configs[i].is_cut();
+    positive[i] = !split[i] && side_of_uncut(tet, classifier_) == VertexState::kPos;
   }
+  // A vertex the cut passes through is split only when it separates
+  // something: a tet around it is split or on the positive side (which keeps
+  // its id). Else every tet around it would move onto its copy and leave it
+  // unused, as when a polygon lies in the object's surface.
+  separating_.assign(mt.num_vertices(), 0);
+  for (std::size_t i = 0; i < found.size(); ++i)
+    if (split[i] || positive[i])
+      for (VertId v : mt.tet(found[i]))
+        if (classifier_.state(v) == VertexState::kOnActive) separating_[v.index()] = 1;
   pending_of_.reserve(found.size());
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Tet& tet = mt.tet(found[i]);
@@ -138,9 +122,9 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
     p.tet = found[i];
     p.split = split[i] != 0;
     if (!p.split) {
-      const bool on_split_vertex = std::any_of(
-          tet.begin(), tet.end(), [&](VertId v) { return classifier_.state(v) == VertexState::kOnActive; });
-      if (!on_split_vertex || side_of_uncut(tet, classifier_) == VertexState::kPos) continue;
+      const bool on_split_vertex =
+          std::any_of(tet.begin(), tet.end(), [&](VertId v) { return splits(v); });
+      if (!on_split_vertex || positive[i]) continue;
     }
     if (p.split)
       resolve_split(p, tet, configs[i], table);
@@ -168,6 +152,38 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
   for (std::size_t i = 0; i < pending_.size(); ++i) job_tets_[fill[job_index[i]]++] = static_cast<std::int32_t>(i);
   job_done_.assign(jobs_.size(), 0);
   find_seconds_ = seconds_since(start);
+}
+
+void MtCut::add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, std::vector<TetId>& found) {
+  // The cut may pass through a vertex that lies off the polygon's box (up to
+  // the classifier's margin), and a tet around it must be classified with
+  // the others: its other vertices may lie on the plane too, or make it
+  // straddle. Each round walks the box of the vertices the last one put on
+  // the cut (one walk: a progressive cut continuing the last one in its
+  // plane puts hundreds on it) and adds the tets around them, which may put
+  // more on. `found` stays sorted.
+  std::vector<TetId> around, extra, merged;
+  for (std::vector<VertId> on = classifier_.take_new_on_vertices(); !on.empty();
+       on = classifier_.take_new_on_vertices()) {
+    engine::Aabb at;
+    for (VertId v : on) at.extend(mt.position(v));
+    around.clear();
+    bvh.for_each_overlapping(mt, at, [&](TetId t) {
+      const Tet& tet = mt.tet(t);
+      if (std::any_of(tet.begin(), tet.end(), [&](VertId v) { return classifier_.on_so_far(v); }))
+        around.push_back(t);
+      return true;
+    });
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    extra.clear();
+    std::set_difference(around.begin(), around.end(), found.begin(), found.end(), std::back_inserter(extra));
+    if (extra.empty()) break;
+    for (TetId t : extra) classifier_.add_candidate(mt.tet(t));
+    merged.clear();
+    std::merge(found.begin(), found.end(), extra.begin(), extra.end(), std::back_inserter(merged));
+    found.swap(merged);
+  }
 }
 
 std::size_t MtCut::job_of(FragId f) const {
@@ -248,7 +264,7 @@ void MtCut::resolve_relabel(Pending& p, const Tet& tet) {
   // lying in the cut (all its vertices on it) becomes surface.
   Tet moved = tet;
   for (VertId& v : moved)
-    if (classifier_.state(v) == VertexState::kOnActive)
+    if (splits(v))
       v = point_id(copy_key(v), [&] { return copy_source(v, geometry_); });
   for (int f = 0; f < 4; ++f) {
     const auto& fv = kTetFaces[f];

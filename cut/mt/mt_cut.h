@@ -114,6 +114,13 @@ class MtCut {
     PointKey key;
     PointSource source;
   };
+  // Step 1, after the polygon's box: the tets around every vertex the
+  // candidates put on the cut, as candidates too, round after round.
+  void add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, std::vector<TetId>& found);
+  // The cut passes through v and splits it (it separates some tets from others).
+  bool splits(VertId v) const {
+    return v.index() < separating_.size() && separating_[v.index()] != 0;
+  }
   void change_tet(Mt& mt, TetBvh& bvh, Pending& p, MtChangeReport& report);
   void add_vertices(Mt& mt, MtChangeReport& report);
   // The vertex of `key`, numbered (and its source recorded by `source()`)
@@ -137,6 +144,7 @@ class MtCut {
   std::vector<NewPoint> points_;  // new points, in id (key) order
   absl::flat_hash_map<PointKey, std::int32_t, PointKeyHash> point_index_;  // key -> index in points_
   bool vertices_added_ = false;
+  std::vector<std::uint8_t> separating_;  // (n_vertices at start) 1: the cut splits the vertex
   std::vector<Pending> pending_;    // tets to change, in the search's order
   std::vector<Tet> piece_tets_;     // the pieces of every pending tet, final vertex ids
   std::size_t new_tets_ = 0;        // pieces of split tets
