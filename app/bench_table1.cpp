@@ -1,10 +1,12 @@
 #include "app/bench_table1.h"
 
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <thread>
 
 #include "app/mt_command.h"
+#include "cut/mt/frame_step_bench.h"
 #include "cut/mt/table1_bench.h"
 #include "engine/atomic_file.h"
 
@@ -109,6 +111,19 @@ nlohmann::ordered_json run_table1_bench(const Table1BenchDef& def) {
   out["rows"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < result.rows.size(); ++i)
     out["rows"].push_back(row_json(result.rows[i], cut::kPaperTable1[i]));
+  cut::FrameStepDef step_def;
+  step_def.runs = def.runs;
+  const cut::FrameStepResult steps = cut::run_frame_steps(built.mt, step_def);
+  out["frame_step"] = {{"steps", steps.steps},
+                       {"sweep_width", step_def.sweep_width},
+                       {"blade_depth", step_def.blade_depth},
+                       {"stride", step_def.stride},
+                       {"split_tets_median", steps.split_tets_median},
+                       {"split_tets_max", steps.split_tets_max},
+                       {"new_tets_median", steps.new_tets_median},
+                       {"ms_median", steps.ms_median},
+                       {"ms_p90", steps.ms_p90},
+                       {"ms_max", steps.ms_max}};
   if (!def.markdown.empty())
     engine::write_stream_atomically(def.markdown, [&](std::ostream& md) { md << table1_markdown(out); });
   return out;
@@ -140,6 +155,17 @@ std::string table1_markdown(const nlohmann::ordered_json& report) {
        << pair_cell(row, "new_tets_lut", false) << " | " << pair_cell(row, "split_ms", true) << " | "
        << pair_cell(row, "dag_update_ms", true) << " | " << pair_cell(row, "total_ms", true) << " | "
        << row["pieces"].get<std::size_t>() << " |\n";
+  }
+  if (report.contains("frame_step")) {
+    const auto& step = report["frame_step"];
+    md << "\nOne frame of a scalpel stroke (the quad a blade sweeps in a frame, cut at "
+       << step["steps"].get<std::size_t>()
+       << " places along a stroke across the model, in order, on one MT, every few frames so that no two cuts "
+          "share a segment; median over runs of each step; see cut/mt/frame_step_bench.h): "
+       << step["split_tets_median"].get<std::size_t>() << " split tets (median; at most "
+       << step["split_tets_max"].get<std::size_t>() << "), " << std::fixed << std::setprecision(3)
+       << step["ms_median"].get<double>() << " ms median, " << step["ms_p90"].get<double>() << " ms at the 90th percentile, "
+       << step["ms_max"].get<double>() << " ms at most.\n";
   }
   md << "\nMachine: " << machine["cpu"].get<std::string>() << ", " << machine["logical_cores"].get<unsigned>()
      << " logical cores (shared with other jobs: load average " << machine["load_average"].get<double>()
