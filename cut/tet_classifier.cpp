@@ -102,8 +102,16 @@ std::uint64_t CutClassifier::edge_key(VertId a, VertId b) {
 
 std::int8_t CutClassifier::raw_side(VertId v) const {
   VertexInfo& info = info_[v.index()];
-  if (info.raw == 2) info.raw = static_cast<std::int8_t>(polygon_.side(positions_[v.index()]));
+  if (info.raw == 2) {
+    info.raw = static_cast<std::int8_t>(polygon_.side(positions_[v.index()]));
+    info.distance = polygon_.signed_distance(positions_[v.index()]);
+  }
   return info.raw;
+}
+
+double CutClassifier::distance(VertId v) const {
+  raw_side(v);
+  return info_[v.index()].distance;
 }
 
 std::int8_t CutClassifier::side_for_crossings(VertId v) const {
@@ -119,8 +127,8 @@ void CutClassifier::pull_in(VertId v) {
 
 double CutClassifier::raw_parameter(VertId a, VertId b) const {
   const VertId lo = a < b ? a : b, hi = a < b ? b : a;
-  const double d_lo = polygon_.signed_distance(positions_[lo.index()]);
-  const double d_hi = polygon_.signed_distance(positions_[hi.index()]);
+  const double d_lo = distance(lo);
+  const double d_hi = distance(hi);
   const double t = d_lo - d_hi != 0 ? d_lo / (d_lo - d_hi) : 0.5;
   return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.5;
 }
@@ -149,10 +157,10 @@ bool CutClassifier::add_candidate(const Tet& tet) {
   if (one_sided(s)) return false;
 
   std::array<double, 4> d;
-  for (int i = 0; i < 4; ++i) d[i] = polygon_.signed_distance(positions_[tet[i].index()]);
+  for (int i = 0; i < 4; ++i) d[i] = distance(tet[i]);  // crossing_sides computed them
   for (int i = 0; i < 4; ++i) {
     VertexInfo& info = info_[tet[i].index()];
-    if (info.reach == 0) touched_.push_back(tet[i]);
+    if (info.reach2 == 0) touched_.push_back(tet[i]);
     if (s[i] == 0) put_on(tet[i]);  // vetoed vertices on the plane count as positive (s = 1)
     for (int j = 0; j < 4; ++j)
       if (j != i) info.lean += d[j];
@@ -161,10 +169,10 @@ bool CutClassifier::add_candidate(const Tet& tet) {
     const VertId a = tet[kTetEdges[k][0]], b = tet[kTetEdges[k][1]];
     const Vec3& pa = positions_[a.index()];
     const Vec3& pb = positions_[b.index()];
-    const double length = (pa - pb).norm();
+    const double length2 = std::max((pa - pb).squaredNorm(), std::numeric_limits<double>::min());
     for (VertId v : {a, b}) {
       VertexInfo& info = info_[v.index()];
-      info.reach = std::max(info.reach, std::max(length, std::numeric_limits<double>::min()));
+      info.reach2 = std::max(info.reach2, length2);
     }
     if (s[kTetEdges[k][0]] * s[kTetEdges[k][1]] >= 0) continue;
     auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
@@ -194,9 +202,9 @@ std::vector<VertId> CutClassifier::take_new_on_vertices() {
 void CutClassifier::keep_off(VertId v) {
   VertexInfo& info = info_[v.index()];
   info.vetoed = true;
-  const double d = polygon_.signed_distance(positions_[v.index()]);
+  const double d = distance(v);
   // On the plane to rounding: the side its neighbours are on.
-  if (raw_side(v) == 0 || std::abs(d) <= 1e-9 * info.reach) {
+  if (raw_side(v) == 0 || std::abs(d) <= 1e-9 * reach(v)) {
     info.kept_side = info.lean < 0 ? -1 : 1;
     if (info.kept_side != raw_side(v)) resided_.push_back(v);
   }
@@ -214,7 +222,7 @@ void CutClassifier::finalize() {
     // face_clamp of their segment off its outline, so that the next stroke
     // continuing the incision splits them.
     info.active = info.pulled || polygon_.projects_inside(p) >= 0 ||
-                  polygon_.distance_outside(p) <= ClassifierDef::margin_fraction(snap_) * info.reach;
+                  polygon_.distance_outside(p) <= ClassifierDef::margin_fraction(snap_) * reach(v);
     if (!info.active) {
       // On the plane but off the polygon: not split; it stays on its side
       // and cut points keep off it.

@@ -33,6 +33,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -158,7 +159,7 @@ class CutClassifier {
 
  private:
   struct VertexInfo {
-    std::int8_t raw = 2;       // exact side, 2 = not computed
+    std::int8_t raw = 2;       // exact side, 2 = not computed (then `distance` is not either)
     bool on = false;           // exactly on the plane, or snapped
     bool active = false;
     bool vetoed = false;       // kept off the cut
@@ -166,7 +167,8 @@ class CutClassifier {
     bool pulled = false;       // on the cut by request
     std::int8_t kept_side = 0; // side of a vertex kept off the cut (0: its raw side)
     double lean = 0;           // sum of its candidate neighbours' distances to the plane
-    double reach = 0;          // longest candidate edge at the vertex
+    double reach2 = 0;         // squared length of the longest candidate edge at the vertex
+    double distance = 0;       // signed distance to the plane (with `raw`)
   };
   struct EdgeInfo {
     double t = 0;              // from the lower id
@@ -174,6 +176,8 @@ class CutClassifier {
   };
   static std::uint64_t edge_key(VertId a, VertId b);
   std::int8_t raw_side(VertId v) const;
+  double distance(VertId v) const;  // signed distance to the plane (cached with raw_side)
+  double reach(VertId v) const { return std::sqrt(info_[v.index()].reach2); }
   std::int8_t side_for_crossings(VertId v) const;
   // side_for_crossings of each vertex; all strictly on one side.
   std::array<std::int8_t, 4> crossing_sides(const Tet& tet) const;

@@ -60,6 +60,7 @@ bool key_less(const PointKey& a, const PointKey& b) {
 MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::vector<Vec3> geometry,
              const MtCutDef& def, SplitTable& table)
     : polygon_(polygon),
+      deformed_(!geometry.empty()),
       geometry_(geometry.empty() ? std::vector<Vec3>(mt.positions().begin(), mt.positions().end())
                                  : std::move(geometry)),
       def_(def),
@@ -70,11 +71,16 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
                                 std::to_string(mt.num_vertices()) + " MT vertices");
   // The query box in rest space: the polygon's box, grown by the snap reach
   // (no edge is longer than the model's box) and by the largest displacement.
-  engine::Aabb model;
+  // On rest geometry the BVH's root box is the model's: no pass over the
+  // vertices (a per-frame cut touches a few dozen of thousands).
+  engine::Aabb model = bvh.bounds();
   double displacement = 0;
-  for (std::size_t v = 0; v < geometry_.size(); ++v) {
-    model.extend(geometry_[v]);
-    displacement = std::max(displacement, (geometry_[v] - mt.positions()[v]).lpNorm<Eigen::Infinity>());
+  if (deformed_) {
+    model = engine::Aabb{};
+    for (std::size_t v = 0; v < geometry_.size(); ++v) {
+      model.extend(geometry_[v]);
+      displacement = std::max(displacement, (geometry_[v] - mt.positions()[v]).lpNorm<Eigen::Infinity>());
+    }
   }
   const double margin = std::max(def.snap, ClassifierDef::kMinSnap) * (model.hi - model.lo).norm() + displacement;
   engine::Aabb box;

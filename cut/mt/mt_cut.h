@@ -137,6 +137,7 @@ class MtCut {
   }
 
   CutPolygon polygon_;
+  bool deformed_ = false;       // a geometry was given (else the rest positions)
   std::vector<Vec3> geometry_;  // (n_vertices at start) positions the cut is computed on
   MtCutDef def_;
   CutClassifier classifier_;

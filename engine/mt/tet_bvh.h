@@ -41,6 +41,9 @@ class TetBvh {
 
   // Live tets in the index (tombstones excluded).
   std::size_t size() const { return indexed_; }
+  // A box holding every indexed tet (the root's; edits keep it holding
+  // them). Empty when nothing is indexed.
+  Aabb bounds() const { return bvh_.empty() ? Aabb{} : bvh_.nodes()[0].box; }
   std::size_t bytes() const;
 
   // Every indexed tet whose box overlaps `box` (candidates: the caller tests
