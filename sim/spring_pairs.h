@@ -1,17 +1,21 @@
 #pragma once
 // The implicit system's spring blocks laid out for the Gauss-Seidel sweeps:
-// each particle's springs in pairs, twice over.
+// each particle's springs in pairs, once.
 //
-// Why this shape. A sweep visits the particles in order and sums, for
-// particle i, B_s u_o over the springs s = (i, o) on one side of i: its
-// "row" (o > i, the backward sweep) or its "column" (o < i, the forward
-// sweep). Pulling both ways from a copy of the blocks ordered each way
-// keeps every sum in registers (pushing B_s u_i into the other end instead
-// is a scatter through memory, spring after spring). Two springs go side by
-// side in the two lanes of an SSE2 register (x86-64's baseline, so the same
-// code and results on every x86-64 machine): a particle's springs are padded
-// to an even count with a zero block whose other end is the dummy particle
-// n, which every vector the sweeps read keeps at 0.
+// Why this shape. A sweep visits the particles in order and needs, for
+// particle i, the sum of B_s u_o over the springs s = (i, o) on one side of
+// i: its "row" (o > i, the backward sweep) or its "column" (o < i, the
+// forward sweep). The blocks are stored once, by row: the backward sweep
+// pulls a row's sum into registers (pull); the forward sweep, once u_i is
+// known, pushes B_s u_i into an accumulator at each later end o of i's row
+// (push), so that o's column sum is complete when the sweep reaches o. One
+// copy halves what assembly writes (a second copy by column is a scatter
+// spring after spring); each sweep still reads the blocks once. Two springs
+// go side by side in the two lanes of an SSE2 register (x86-64's baseline,
+// so the same code and results on every x86-64 machine): a particle's
+// springs are padded to an even count with a zero block whose other end is
+// the dummy particle n, which every vector the sweeps pull from keeps at 0
+// and every accumulator has as a last entry that is never read.
 //
 // The layout (starts, other ends, slot of each spring) depends only on the
 // springs' ends; it is rebuilt when they change, the blocks every assembly.
@@ -69,6 +73,20 @@ struct PairedSide {
       sz += b.across * uz + dot * b.wz;
     }
     return {sx[0] + sx[1], sy[0] + sy[1], sz[0] + sz[1]};
+  }
+
+  // acc[o_s] += B_s u over particle i's springs. acc has n + 1 entries
+  // (acc[n] takes the pads' zeros and is never read).
+  void push(std::size_t i, const Vec3& u, Vec3* acc) const {
+    const Lanes2 ux = {u.x(), u.x()}, uy = {u.y(), u.y()}, uz = {u.z(), u.z()};
+    const std::int32_t* o = other.data();
+    for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
+      const BlockPair& b = blocks[static_cast<std::size_t>(k)];
+      const Lanes2 dot = b.wx * ux + b.wy * uy + b.wz * uz;
+      const Lanes2 cx = b.across * ux + dot * b.wx, cy = b.across * uy + dot * b.wy, cz = b.across * uz + dot * b.wz;
+      acc[o[2 * k]] += Vec3(cx[0], cy[0], cz[0]);
+      acc[o[2 * k + 1]] += Vec3(cx[1], cy[1], cz[1]);
+    }
   }
 };
 

@@ -38,7 +38,7 @@ Sym3 Sym3::inverse() const {
 
 void SpringSystem::resize(std::size_t n, std::size_t) {
   for (auto* v : {&own_, &diag_, &diag_inverse_}) v->resize(n);
-  for (auto* v : {&rhat_, &t_, &s_, &u_}) v->assign(n + 1, Vec3::Zero());  // [n] = 0: the pads' dummy
+  for (auto* v : {&rhat_, &t_, &s_, &u_, &acc_}) v->assign(n + 1, Vec3::Zero());  // [n] = 0: the pads' dummy
   for (auto* v : {&r_, &z_, &p_, &ut_, &q_}) v->resize(n);
 }
 
@@ -54,7 +54,6 @@ void SpringSystem::update_layout(const SpringModel& model) {
     if (model.spring_a[s] >= model.spring_b[s] || (s > 0 && model.spring_a[s - 1] > model.spring_a[s]))
       rows_sorted_ = false;
   rows_.build(n, model.spring_a, model.spring_b);
-  cols_.build(n, model.spring_b, model.spring_a);
 }
 
 // b = h (f0 + h K v0), K v0 = -sum_s J_s (v_a - v_b), J_s = k (n n^T + t (I - n n^T)).
@@ -116,7 +115,6 @@ void SpringSystem::assemble(const SpringModel& model, const SpringState& state, 
         blk = SpringBlock{};
       }
       rows_.set(s, blk.w, blk.across);
-      cols_.set(s, blk.w, blk.across);
     }
     b[a] += b_a;
     add_sym(diag_[a], diag_a);
@@ -132,14 +130,22 @@ void SpringSystem::assemble(const SpringModel& model, const SpringState& state, 
 }
 
 // (A u)_i = own_i u_i + sum over i's springs of B_s (u_i - u_o) = own_i u_i
-// + (sum B_s) u_i - pulls, with sum B_s = diag_i - own_i (masked springs
-// are 0 in the layout and in own_, not in diag_, at their fixed end).
+// + (sum B_s) u_i - the row's pull - the pushes of i's column, with sum B_s
+// = diag_i - own_i (masked springs are 0 in the layout and in own_, not in
+// diag_, at their fixed end). Any spring order: the pushes are added once
+// every particle has pushed; acc_ is left all 0 but for its dummy.
 void SpringSystem::multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out) {
   const std::size_t n = own_.size();
   std::copy(u.begin(), u.begin() + static_cast<std::ptrdiff_t>(n), u_.begin());  // u_[n] stays 0
+  std::fill(acc_.begin(), acc_.end(), Vec3::Zero());
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 self = diag_inverse_[i].xx == 0 ? Vec3(own_[i] * u_[i]) : Vec3(diag_[i] * u_[i]);
-    out[i] = self - rows_.pull(i, u_.data()) - cols_.pull(i, u_.data());
+    out[i] = self - rows_.pull(i, u_.data());
+    rows_.push(i, u_[i], acc_.data());
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    out[i] -= acc_[i];
+    acc_[i].setZero();
   }
 }
 
@@ -194,8 +200,9 @@ CgStats SpringSystem::solve_block_jacobi(const std::vector<Vec3>& b, double tole
 // sweep), Ahat p = t + W^-1 (p - (2 / w - 1) D t) (forward sweep), and
 // x = W^-T xhat moves by alpha t. Off-diagonal blocks are -B_s, so with
 // sum_i = sum B_s t_o over i's row (o > i), t_i = w D_i^-1 (p_i + sum_i) and
-// (p - (2 / w - 1) D t)_i = (w - 1) p_i - (2 - w) sum_i; the forward sweep
-// pulls over i's column (o < i) what W^-1 gave the earlier particles.
+// (p - (2 / w - 1) D t)_i = (w - 1) p_i - (2 - w) sum_i; in the forward
+// sweep, each particle finds its column's sum (o < i) of what W^-1 gave the
+// earlier particles in acc_, pushed there by them, and pushes its own.
 //
 // The true residual r = W rhat = D rhat / w + L rhat costs a sweep, so it is
 // computed only when rhat . D rhat, scaled by the ratio |r|^2 / rhat . D rhat
@@ -205,27 +212,36 @@ CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tole
   const std::size_t n = own_.size();
   const Sym3* diag = diag_.data();
   const Sym3* dinv = diag_inverse_.data();
-  // rhat, t and s (the forward sweep's W^-1 (...)) are pulled from: n + 1 entries, the last 0.
+  // t is pulled from: n + 1 entries, the last 0. acc (n + 1) takes the
+  // forward sweeps' pushes; each particle reads its entry and zeroes it.
   Vec3 *x = x_vec.data(), *rhat = rhat_.data(), *z = z_.data(), *p = p_.data(), *t = t_.data(), *ut = ut_.data(),
-       *q = q_.data(), *sv = s_.data();
+       *q = q_.data(), *sv = s_.data(), *acc = acc_.data();
+  // acc_i: the sum of i's column's pushes, then 0 again.
+  const auto take = [acc](std::size_t i) {
+    const Vec3 sum = acc[i];
+    acc[i].setZero();
+    return sum;
+  };
 
   // The true residual |W rhat|^2, (W rhat)_i = D_i rhat_i / w - sum of i's
   // column blocks times rhat at their other ends.
   const auto true_residual2 = [&] {
     double rr = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 r = z[i] * (1 / kRelaxation) - cols_.pull(i, rhat);
+      const Vec3 r = z[i] * (1 / kRelaxation) - take(i);
+      rows_.push(i, rhat[i], acc);
       rr += r.squaredNorm();
     }
     return rr;
   };
 
-  multiply(x_vec, q_);
+  multiply(x_vec, q_);  // leaves acc_[0, n) all 0
   double rr = 0, rz = 0;
   for (std::size_t i = 0; i < n; ++i) {  // rhat = W^-1 r, r = b - A x
     const Vec3 r = b[i] - q[i];
     rr += r.squaredNorm();
-    rhat[i] = dinv[i] * (kRelaxation * (r + cols_.pull(i, rhat)));
+    rhat[i] = dinv[i] * (kRelaxation * (r + take(i)));
+    rows_.push(i, rhat[i], acc);
     z[i] = diag[i] * rhat[i];
     p[i] = z[i];
     rz += rhat[i].dot(z[i]);
@@ -251,8 +267,9 @@ CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tole
     }
     double pq = 0;
     for (std::size_t i = 0; i < n; ++i) {  // q = Ahat p = t + W^-1 (p - (2 / w - 1) D t)
-      const Vec3 acc = cols_.pull(i, sv);
-      sv[i] = dinv[i] * (kRelaxation * (acc + (kRelaxation - 1) * p[i] - (2 - kRelaxation) * ut[i]));
+      const Vec3 sum = take(i);
+      sv[i] = dinv[i] * (kRelaxation * (sum + (kRelaxation - 1) * p[i] - (2 - kRelaxation) * ut[i]));
+      rows_.push(i, sv[i], acc);
       q[i] = t[i] + sv[i];
       pq += p[i].dot(q[i]);
     }
