@@ -41,23 +41,12 @@ struct BlockPair {
 struct PairedSide {
   std::vector<std::int32_t> start;  // (n + 1) particle i's pairs: [start[i], start[i + 1])
   std::vector<std::int32_t> other;  // (2 n_pairs) each lane's other end; n for a pad
-  std::vector<BlockPair> blocks;    // (n_pairs) the blocks; pads stay 0
-  std::vector<std::int32_t> slot;   // (n_springs) spring s's lane: pair slot / 2, lane slot % 2
+  std::vector<BlockPair> blocks;    // (n_pairs) the blocks, lane k % 2 of pair k / 2; pads stay 0
+  std::vector<std::int32_t> lane_spring;  // (2 n_pairs) each lane's spring; -1 for a pad
 
   // Lays out n particles' springs, spring s belonging to particle key[s]
-  // with other end other_end[s]; blocks all 0.
+  // with other end other_end[s], each particle's in spring order; blocks all 0.
   void build(std::size_t n, const std::vector<std::int32_t>& key, const std::vector<std::int32_t>& other_end);
-
-  // Writes spring s's block.
-  void set(std::size_t s, const Vec3& w, double across) {
-    const std::int32_t k = slot[s];
-    BlockPair& p = blocks[static_cast<std::size_t>(k >> 1)];
-    const int lane = k & 1;
-    p.wx[lane] = w.x();
-    p.wy[lane] = w.y();
-    p.wz[lane] = w.z();
-    p.across[lane] = across;
-  }
 
   // sum over particle i's springs of B_s u[o_s]. u has n + 1 entries, u[n] = 0.
   Vec3 pull(std::size_t i, const Vec3* u) const {

@@ -4,30 +4,6 @@
 #include <cmath>
 
 namespace mtcut::sim {
-namespace {
-
-constexpr double kTinyLength2 = 1e-300;  // m^2, below any real spring's
-
-void add_block(Sym3& d, const SpringBlock& blk) {
-  const Vec3& w = blk.w;
-  d.xx += w.x() * w.x() + blk.across;
-  d.xy += w.x() * w.y();
-  d.xz += w.x() * w.z();
-  d.yy += w.y() * w.y() + blk.across;
-  d.yz += w.y() * w.z();
-  d.zz += w.z() * w.z() + blk.across;
-}
-
-void add_sym(Sym3& d, const Sym3& e) {
-  d.xx += e.xx;
-  d.xy += e.xy;
-  d.xz += e.xz;
-  d.yy += e.yy;
-  d.yz += e.yz;
-  d.zz += e.zz;
-}
-
-}  // namespace
 
 Sym3 Sym3::inverse() const {
   const double cxx = yy * zz - yz * yz, cxy = xz * yz - xy * zz, cxz = xy * yz - xz * yy;
@@ -40,93 +16,6 @@ void SpringSystem::resize(std::size_t n, std::size_t) {
   for (auto* v : {&own_, &diag_, &diag_inverse_}) v->resize(n);
   for (auto* v : {&rhat_, &t_, &s_, &u_, &acc_}) v->assign(n + 1, Vec3::Zero());  // [n] = 0: the pads' dummy
   for (auto* v : {&r_, &z_, &p_, &ut_, &q_}) v->resize(n);
-}
-
-void SpringSystem::update_layout(const SpringModel& model) {
-  const std::size_t n = model.num_particles(), m = model.num_springs();
-  if (layout_n_ == n && layout_a_ == model.spring_a && layout_b_ == model.spring_b) return;
-  resize(n, m);
-  layout_n_ = n;
-  layout_a_ = model.spring_a;
-  layout_b_ = model.spring_b;
-  rows_sorted_ = true;
-  for (std::size_t s = 0; s < m; ++s)
-    if (model.spring_a[s] >= model.spring_b[s] || (s > 0 && model.spring_a[s - 1] > model.spring_a[s]))
-      rows_sorted_ = false;
-  rows_.build(n, model.spring_a, model.spring_b);
-}
-
-// b = h (f0 + h K v0), K v0 = -sum_s J_s (v_a - v_b), J_s = k (n n^T + t (I - n n^T)).
-// Spring s adds g_s to b_a and -g_s to b_b: its force (Hooke + dashpot, as
-// compute_forces) times h, minus h^2 J_s (v_a - v_b).
-void SpringSystem::assemble(const SpringModel& model, const SpringState& state, const std::vector<Vec3>& f, double h,
-                            std::vector<Vec3>& b) {
-  const std::size_t n = model.num_particles(), m = model.num_springs();
-  update_layout(model);
-  const double h2 = h * h;
-
-  const double mass_factor = 1.0 + h * model.mass_damping;
-  const double* inv_mass = model.inv_mass.data();
-  for (std::size_t i = 0; i < n; ++i) {
-    own_[i] = Sym3::scaled_identity(model.mass[i] * mass_factor);
-    diag_[i] = own_[i];
-    b[i] = h * f[i];
-  }
-
-  // One pass over the springs: B_s into the diagonal blocks and the paired
-  // layout, g_s into b; springs at fixed particles masked. A run of springs
-  // with the same first particle a sums its share of a's diagonal block and
-  // b in registers (not through memory, spring after spring: a chain of
-  // stores and reloads).
-  const std::int32_t *spring_a = model.spring_a.data(), *spring_b = model.spring_b.data();
-  const Vec3 *x = state.x.data(), *v = state.v.data();
-  const double *rest = model.rest_length.data(), *stiffness = model.stiffness.data(), *damping = model.damping.data();
-  for (std::size_t s = 0; s < m;) {
-    const auto a = spring_a[s];
-    const Vec3 xa = x[a], va = v[a];
-    const bool a_fixed = inv_mass[a] == 0;
-    Sym3 diag_a{};
-    Vec3 b_a = Vec3::Zero();
-    for (; s < m && spring_a[s] == a; ++s) {
-      const auto c = spring_b[s];
-      const Vec3 d = x[c] - xa;
-      // Branch-free (a branch on the sign of t, which flips spring to
-      // spring, mispredicts half the time and stalls the pipeline):
-      // + kTinyLength2 is exact for any real spring, and a zero-length one
-      // gets dir = 0 and adds nothing; t = max(0, u) = (u + |u|) / 2 exactly.
-      const double inv_length = 1.0 / std::sqrt(d.squaredNorm() + kTinyLength2);
-      const Vec3 dir = d * inv_length;
-      const double k = stiffness[s];
-      const double u = 1.0 - rest[s] * inv_length;
-      const double t = 0.5 * (u + std::abs(u));
-      const double along = h * damping[s] + h2 * k * (1.0 - t), across = h2 * k * t;
-      const Vec3 dv0 = va - v[c];
-      const double dn = dir.dot(dv0);
-      // g_s = h f_a = h (k (l - L) - c n . dv0) n, l = |d|^2 / |d|, minus h^2 J_s dv0.
-      const Vec3 g = (h * k * (d.squaredNorm() * inv_length - rest[s]) - along * dn) * dir - across * dv0;
-      b_a += g;
-      b[c] -= g;
-      SpringBlock blk{std::sqrt(along) * dir, across};
-      add_block(diag_a, blk);
-      add_block(diag_[c], blk);
-      if (a_fixed || inv_mass[c] == 0) {  // masked: fixed rows decouple
-        if (!a_fixed) add_block(own_[a], blk);
-        if (inv_mass[c] != 0) add_block(own_[c], blk);
-        blk = SpringBlock{};
-      }
-      rows_.set(s, blk.w, blk.across);
-    }
-    b[a] += b_a;
-    add_sym(diag_[a], diag_a);
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (inv_mass[i] == 0) {
-      b[i].setZero();
-      diag_inverse_[i] = Sym3{};
-    } else {
-      diag_inverse_[i] = diag_[i].inverse();
-    }
-  }
 }
 
 // (A u)_i = own_i u_i + sum over i's springs of B_s (u_i - u_o) = own_i u_i

@@ -28,7 +28,16 @@ struct RandomSide {
       across.push_back(std::abs(g(rng)));
     }
     side.build(n, key, other_end);
-    for (std::size_t s = 0; s < key.size(); ++s) side.set(s, w[s], across[s]);
+    for (std::size_t k = 0; k < side.lane_spring.size(); ++k) {
+      const std::int32_t s = side.lane_spring[k];
+      if (s < 0) continue;  // a pad
+      BlockPair& b = side.blocks[k / 2];
+      const auto& ws = w[static_cast<std::size_t>(s)];
+      b.wx[k % 2] = ws.x();
+      b.wy[k % 2] = ws.y();
+      b.wz[k % 2] = ws.z();
+      b.across[k % 2] = across[static_cast<std::size_t>(s)];
+    }
   }
 
   Vec3 block_times(std::size_t s, const Vec3& u) const { return across[s] * u + w[s].dot(u) * w[s]; }
