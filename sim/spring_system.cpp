@@ -14,7 +14,7 @@ Sym3 Sym3::inverse() const {
 
 void SpringSystem::resize(std::size_t n, std::size_t) {
   for (auto* v : {&own_, &diag_, &diag_inverse_}) v->resize(n);
-  for (auto* v : {&rhat_, &t_, &s_, &u_, &acc_}) v->assign(n + 1, Vec3::Zero());  // [n] = 0: the pads' dummy
+  for (auto* v : {&rhat_, &t_, &s_, &u_, &acc_, &acc_x_}) v->assign(n + 1, Vec3::Zero());  // [n] = 0: the pads' dummy
   for (auto* v : {&r_, &z_, &p_, &ut_, &q_}) v->resize(n);
 }
 

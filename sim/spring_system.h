@@ -117,8 +117,9 @@ class SpringSystem {
   std::vector<Sym3> own_, diag_, diag_inverse_;
   // CG scratch: (n_particles + 1, the last entry the pads' dummy, kept 0)
   // for the vectors the sweeps pull from and the pushes' accumulator (all 0
-  // between sweeps), (n_particles) for the others.
-  std::vector<Vec3> rhat_, t_, s_, u_, acc_;
+  // between sweeps; acc_x_ takes the pushes of x in the SSOR solver's first
+  // pass), (n_particles) for the others.
+  std::vector<Vec3> rhat_, t_, s_, u_, acc_, acc_x_;
   std::vector<Vec3> r_, z_, p_, ut_, q_;
 };
 

@@ -13,9 +13,16 @@
 // sweep, each particle finds its column's sum (o < i) of what W^-1 gave the
 // earlier particles in acc_, pushed there by them, and pushes its own.
 //
+// The start, rhat = W^-1 (b - A x), is one forward pass: A x's row sums
+// pulled, its column sums and W^-1's pushed from the same blocks (push2),
+// in the order multiply adds them (the same r, bit for bit).
+//
 // The true residual r = W rhat = D rhat / w + L rhat costs a sweep, so it is
 // computed only when rhat . D rhat, scaled by the ratio |r|^2 / rhat . D rhat
 // at the last check, predicts convergence.
+
+#include <algorithm>
+#include <cstddef>
 
 #include "sim/spring_system.h"
 
@@ -49,13 +56,22 @@ CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tole
     return rr;
   };
 
-  multiply(x_vec, q_);  // leaves acc_[0, n) all 0
+  // One forward pass: r = b - A x, as multiply computes it (x's row pulled
+  // from the padded copy u, its column pushed into acc_x by the earlier
+  // particles), and rhat = W^-1 r, both pushes from the same blocks.
+  std::copy(x_vec.begin(), x_vec.begin() + static_cast<std::ptrdiff_t>(n), u_.begin());  // u_[n] stays 0
+  const Vec3* u = u_.data();
+  Vec3* acc_x = acc_x_.data();
   double rr = 0, rz = 0;
-  for (std::size_t i = 0; i < n; ++i) {  // rhat = W^-1 r, r = b - A x
-    const Vec3 r = b[i] - q[i];
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 self = dinv[i].xx == 0 ? Vec3(own_[i] * u[i]) : Vec3(diag[i] * u[i]);
+    Vec3 ax = self - rows_.pull(i, u);
+    ax -= acc_x[i];
+    acc_x[i].setZero();
+    const Vec3 r = b[i] - ax;
     rr += r.squaredNorm();
     rhat[i] = dinv[i] * (kRelaxation * (r + take(i)));
-    rows_.push(i, rhat[i], acc);
+    rows_.push2(i, u[i], acc_x, rhat[i], acc);
     z[i] = diag[i] * rhat[i];
     p[i] = z[i];
     rz += rhat[i].dot(z[i]);
