@@ -60,6 +60,7 @@ class Stepper {
   void reset_warm_start() {
     dv_.clear();
     dv_last_.clear();
+    extrapolation_ = 1.0;
   }
 
  private:
@@ -73,6 +74,11 @@ class Stepper {
   // Scratch (n_particles): forces, saved state, the implicit step's dv, the
   // one before (the warm start extrapolates them) and right-hand side.
   std::vector<Vec3> f_, saved_x_, saved_v_, dv_, dv_last_, b_;
+  // (n_particles) the last step's change of dv, along which the warm start extrapolates.
+  std::vector<Vec3> dv_change_;
+  // The warm start's step along dv_change_: the factor that would have
+  // predicted the last solution best (least squares), in [0, 1].
+  double extrapolation_ = 1.0;
   // (n_particles) the one-pass explicit sub-step's reactions, all zero between sub-steps.
   std::vector<Vec3> acc_;
   RunPairs run_pairs_;  // the model's springs in pairs for the one-pass sub-step
