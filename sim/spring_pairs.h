@@ -1,17 +1,21 @@
 #pragma once
 // The implicit system's spring blocks laid out for the Gauss-Seidel sweeps:
-// each particle's springs in pairs, twice over.
+// each particle's springs in pairs, once.
 //
-// Why this shape. A sweep visits the particles in order and sums, for
-// particle i, B_s u_o over the springs s = (i, o) on one side of i: its
-// "row" (o > i, the backward sweep) or its "column" (o < i, the forward
-// sweep). Pulling both ways from a copy of the blocks ordered each way
-// keeps every sum in registers (pushing B_s u_i into the other end instead
-// is a scatter through memory, spring after spring). Two springs go side by
-// side in the two lanes of an SSE2 register (x86-64's baseline, so the same
-// code and results on every x86-64 machine): a particle's springs are padded
-// to an even count with a zero block whose other end is the dummy particle
-// n, which every vector the sweeps read keeps at 0.
+// Why this shape. A sweep visits the particles in order and needs, for
+// particle i, the sum of B_s u_o over the springs s = (i, o) on one side of
+// i: its "row" (o > i, the backward sweep) or its "column" (o < i, the
+// forward sweep). The blocks are stored once, by row: the backward sweep
+// pulls a row's sum into registers (pull); the forward sweep, once u_i is
+// known, pushes B_s u_i into an accumulator at each later end o of i's row
+// (push), so that o's column sum is complete when the sweep reaches o. One
+// copy halves what assembly writes (a second copy by column is a scatter
+// spring after spring); each sweep still reads the blocks once. Two springs
+// go side by side in the two lanes of an SSE2 register (x86-64's baseline,
+// so the same code and results on every x86-64 machine): a particle's
+// springs are padded to an even count with a zero block whose other end is
+// the dummy particle n, which every vector the sweeps pull from keeps at 0
+// and every accumulator has as a last entry that is never read.
 //
 // The layout (starts, other ends, slot of each spring) depends only on the
 // springs' ends; it is rebuilt when they change, the blocks every assembly.
@@ -37,23 +41,12 @@ struct BlockPair {
 struct PairedSide {
   std::vector<std::int32_t> start;  // (n + 1) particle i's pairs: [start[i], start[i + 1])
   std::vector<std::int32_t> other;  // (2 n_pairs) each lane's other end; n for a pad
-  std::vector<BlockPair> blocks;    // (n_pairs) the blocks; pads stay 0
-  std::vector<std::int32_t> slot;   // (n_springs) spring s's lane: pair slot / 2, lane slot % 2
+  std::vector<BlockPair> blocks;    // (n_pairs) the blocks, lane k % 2 of pair k / 2; pads stay 0
+  std::vector<std::int32_t> lane_spring;  // (2 n_pairs) each lane's spring; -1 for a pad
 
   // Lays out n particles' springs, spring s belonging to particle key[s]
-  // with other end other_end[s]; blocks all 0.
+  // with other end other_end[s], each particle's in spring order; blocks all 0.
   void build(std::size_t n, const std::vector<std::int32_t>& key, const std::vector<std::int32_t>& other_end);
-
-  // Writes spring s's block.
-  void set(std::size_t s, const Vec3& w, double across) {
-    const std::int32_t k = slot[s];
-    BlockPair& p = blocks[static_cast<std::size_t>(k >> 1)];
-    const int lane = k & 1;
-    p.wx[lane] = w.x();
-    p.wy[lane] = w.y();
-    p.wz[lane] = w.z();
-    p.across[lane] = across;
-  }
 
   // sum over particle i's springs of B_s u[o_s]. u has n + 1 entries, u[n] = 0.
   Vec3 pull(std::size_t i, const Vec3* u) const {
@@ -69,6 +62,39 @@ struct PairedSide {
       sz += b.across * uz + dot * b.wz;
     }
     return {sx[0] + sx[1], sy[0] + sy[1], sz[0] + sz[1]};
+  }
+
+  // acc[o_s] += B_s u over particle i's springs. acc has n + 1 entries
+  // (acc[n] takes the pads' zeros and is never read).
+  void push(std::size_t i, const Vec3& u, Vec3* acc) const {
+    const Lanes2 ux = {u.x(), u.x()}, uy = {u.y(), u.y()}, uz = {u.z(), u.z()};
+    const std::int32_t* o = other.data();
+    for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
+      const BlockPair& b = blocks[static_cast<std::size_t>(k)];
+      const Lanes2 dot = b.wx * ux + b.wy * uy + b.wz * uz;
+      const Lanes2 cx = b.across * ux + dot * b.wx, cy = b.across * uy + dot * b.wy, cz = b.across * uz + dot * b.wz;
+      acc[o[2 * k]] += Vec3(cx[0], cy[0], cz[0]);
+      acc[o[2 * k + 1]] += Vec3(cx[1], cy[1], cz[1]);
+    }
+  }
+
+  // push(i, u, acc_u) and push(i, v, acc_v) in one pass over i's blocks
+  // (the same sums, bit for bit).
+  void push2(std::size_t i, const Vec3& u, Vec3* acc_u, const Vec3& v, Vec3* acc_v) const {
+    const Lanes2 ux = {u.x(), u.x()}, uy = {u.y(), u.y()}, uz = {u.z(), u.z()};
+    const Lanes2 vx = {v.x(), v.x()}, vy = {v.y(), v.y()}, vz = {v.z(), v.z()};
+    const std::int32_t* o = other.data();
+    for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
+      const BlockPair& b = blocks[static_cast<std::size_t>(k)];
+      const Lanes2 du = b.wx * ux + b.wy * uy + b.wz * uz, dv = b.wx * vx + b.wy * vy + b.wz * vz;
+      const Lanes2 cx = b.across * ux + du * b.wx, cy = b.across * uy + du * b.wy, cz = b.across * uz + du * b.wz;
+      const Lanes2 ex = b.across * vx + dv * b.wx, ey = b.across * vy + dv * b.wy, ez = b.across * vz + dv * b.wz;
+      const std::size_t o0 = static_cast<std::size_t>(o[2 * k]), o1 = static_cast<std::size_t>(o[2 * k + 1]);
+      acc_u[o0] += Vec3(cx[0], cy[0], cz[0]);
+      acc_u[o1] += Vec3(cx[1], cy[1], cz[1]);
+      acc_v[o0] += Vec3(ex[0], ey[0], ez[0]);
+      acc_v[o1] += Vec3(ex[1], ey[1], ez[1]);
+    }
   }
 };
 

@@ -4,30 +4,6 @@
 #include <cmath>
 
 namespace mtcut::sim {
-namespace {
-
-constexpr double kTinyLength2 = 1e-300;  // m^2, below any real spring's
-
-void add_block(Sym3& d, const SpringBlock& blk) {
-  const Vec3& w = blk.w;
-  d.xx += w.x() * w.x() + blk.across;
-  d.xy += w.x() * w.y();
-  d.xz += w.x() * w.z();
-  d.yy += w.y() * w.y() + blk.across;
-  d.yz += w.y() * w.z();
-  d.zz += w.z() * w.z() + blk.across;
-}
-
-void add_sym(Sym3& d, const Sym3& e) {
-  d.xx += e.xx;
-  d.xy += e.xy;
-  d.xz += e.xz;
-  d.yy += e.yy;
-  d.yz += e.yz;
-  d.zz += e.zz;
-}
-
-}  // namespace
 
 Sym3 Sym3::inverse() const {
   const double cxx = yy * zz - yz * yz, cxy = xz * yz - xy * zz, cxz = xy * yz - xz * yy;
@@ -38,108 +14,27 @@ Sym3 Sym3::inverse() const {
 
 void SpringSystem::resize(std::size_t n, std::size_t) {
   for (auto* v : {&own_, &diag_, &diag_inverse_}) v->resize(n);
-  for (auto* v : {&rhat_, &t_, &s_, &u_}) v->assign(n + 1, Vec3::Zero());  // [n] = 0: the pads' dummy
+  for (auto* v : {&rhat_, &t_, &s_, &u_, &acc_, &acc_x_}) v->assign(n + 1, Vec3::Zero());  // [n] = 0: the pads' dummy
   for (auto* v : {&r_, &z_, &p_, &ut_, &q_}) v->resize(n);
 }
 
-void SpringSystem::update_layout(const SpringModel& model) {
-  const std::size_t n = model.num_particles(), m = model.num_springs();
-  if (layout_n_ == n && layout_a_ == model.spring_a && layout_b_ == model.spring_b) return;
-  resize(n, m);
-  layout_n_ = n;
-  layout_a_ = model.spring_a;
-  layout_b_ = model.spring_b;
-  rows_sorted_ = true;
-  for (std::size_t s = 0; s < m; ++s)
-    if (model.spring_a[s] >= model.spring_b[s] || (s > 0 && model.spring_a[s - 1] > model.spring_a[s]))
-      rows_sorted_ = false;
-  rows_.build(n, model.spring_a, model.spring_b);
-  cols_.build(n, model.spring_b, model.spring_a);
-}
-
-// b = h (f0 + h K v0), K v0 = -sum_s J_s (v_a - v_b), J_s = k (n n^T + t (I - n n^T)).
-// Spring s adds g_s to b_a and -g_s to b_b: its force (Hooke + dashpot, as
-// compute_forces) times h, minus h^2 J_s (v_a - v_b).
-void SpringSystem::assemble(const SpringModel& model, const SpringState& state, const std::vector<Vec3>& f, double h,
-                            std::vector<Vec3>& b) {
-  const std::size_t n = model.num_particles(), m = model.num_springs();
-  update_layout(model);
-  const double h2 = h * h;
-
-  const double mass_factor = 1.0 + h * model.mass_damping;
-  const double* inv_mass = model.inv_mass.data();
-  for (std::size_t i = 0; i < n; ++i) {
-    own_[i] = Sym3::scaled_identity(model.mass[i] * mass_factor);
-    diag_[i] = own_[i];
-    b[i] = h * f[i];
-  }
-
-  // One pass over the springs: B_s into the diagonal blocks and the paired
-  // layout, g_s into b; springs at fixed particles masked. A run of springs
-  // with the same first particle a sums its share of a's diagonal block and
-  // b in registers (not through memory, spring after spring: a chain of
-  // stores and reloads).
-  const std::int32_t *spring_a = model.spring_a.data(), *spring_b = model.spring_b.data();
-  const Vec3 *x = state.x.data(), *v = state.v.data();
-  const double *rest = model.rest_length.data(), *stiffness = model.stiffness.data(), *damping = model.damping.data();
-  for (std::size_t s = 0; s < m;) {
-    const auto a = spring_a[s];
-    const Vec3 xa = x[a], va = v[a];
-    const bool a_fixed = inv_mass[a] == 0;
-    Sym3 diag_a{};
-    Vec3 b_a = Vec3::Zero();
-    for (; s < m && spring_a[s] == a; ++s) {
-      const auto c = spring_b[s];
-      const Vec3 d = x[c] - xa;
-      // Branch-free (a branch on the sign of t, which flips spring to
-      // spring, mispredicts half the time and stalls the pipeline):
-      // + kTinyLength2 is exact for any real spring, and a zero-length one
-      // gets dir = 0 and adds nothing; t = max(0, u) = (u + |u|) / 2 exactly.
-      const double inv_length = 1.0 / std::sqrt(d.squaredNorm() + kTinyLength2);
-      const Vec3 dir = d * inv_length;
-      const double k = stiffness[s];
-      const double u = 1.0 - rest[s] * inv_length;
-      const double t = 0.5 * (u + std::abs(u));
-      const double along = h * damping[s] + h2 * k * (1.0 - t), across = h2 * k * t;
-      const Vec3 dv0 = va - v[c];
-      const double dn = dir.dot(dv0);
-      // g_s = h f_a = h (k (l - L) - c n . dv0) n, l = |d|^2 / |d|, minus h^2 J_s dv0.
-      const Vec3 g = (h * k * (d.squaredNorm() * inv_length - rest[s]) - along * dn) * dir - across * dv0;
-      b_a += g;
-      b[c] -= g;
-      SpringBlock blk{std::sqrt(along) * dir, across};
-      add_block(diag_a, blk);
-      add_block(diag_[c], blk);
-      if (a_fixed || inv_mass[c] == 0) {  // masked: fixed rows decouple
-        if (!a_fixed) add_block(own_[a], blk);
-        if (inv_mass[c] != 0) add_block(own_[c], blk);
-        blk = SpringBlock{};
-      }
-      rows_.set(s, blk.w, blk.across);
-      cols_.set(s, blk.w, blk.across);
-    }
-    b[a] += b_a;
-    add_sym(diag_[a], diag_a);
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (inv_mass[i] == 0) {
-      b[i].setZero();
-      diag_inverse_[i] = Sym3{};
-    } else {
-      diag_inverse_[i] = diag_[i].inverse();
-    }
-  }
-}
-
 // (A u)_i = own_i u_i + sum over i's springs of B_s (u_i - u_o) = own_i u_i
-// + (sum B_s) u_i - pulls, with sum B_s = diag_i - own_i (masked springs
-// are 0 in the layout and in own_, not in diag_, at their fixed end).
+// + (sum B_s) u_i - the row's pull - the pushes of i's column, with sum B_s
+// = diag_i - own_i (masked springs are 0 in the layout and in own_, not in
+// diag_, at their fixed end). Any spring order: the pushes are added once
+// every particle has pushed; acc_ is left all 0 but for its dummy.
 void SpringSystem::multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out) {
   const std::size_t n = own_.size();
   std::copy(u.begin(), u.begin() + static_cast<std::ptrdiff_t>(n), u_.begin());  // u_[n] stays 0
+  std::fill(acc_.begin(), acc_.end(), Vec3::Zero());
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 self = diag_inverse_[i].xx == 0 ? Vec3(own_[i] * u_[i]) : Vec3(diag_[i] * u_[i]);
-    out[i] = self - rows_.pull(i, u_.data()) - cols_.pull(i, u_.data());
+    out[i] = self - rows_.pull(i, u_.data());
+    rows_.push(i, u_[i], acc_.data());
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    out[i] -= acc_[i];
+    acc_[i].setZero();
   }
 }
 
@@ -184,93 +79,6 @@ CgStats SpringSystem::solve_block_jacobi(const std::vector<Vec3>& b, double tole
     for (std::size_t i = 0; i < n; ++i) p_[i] = z_[i] + beta * p_[i];
     ++stats.iterations;
   }
-  stats.residual2 = rr;
-  return stats;
-}
-
-// SSOR with relaxation w: W = D / w + L, A = W + W^T - (2 / w - 1) D.
-// CG on Ahat xhat = W^-1 b, Ahat = W^-1 A W^-T, preconditioned by D (z =
-// D rhat): PCG on A with M ~ W D^-1 W^T. Eisenstat: with t = W^-T p (backward
-// sweep), Ahat p = t + W^-1 (p - (2 / w - 1) D t) (forward sweep), and
-// x = W^-T xhat moves by alpha t. Off-diagonal blocks are -B_s, so with
-// sum_i = sum B_s t_o over i's row (o > i), t_i = w D_i^-1 (p_i + sum_i) and
-// (p - (2 / w - 1) D t)_i = (w - 1) p_i - (2 - w) sum_i; the forward sweep
-// pulls over i's column (o < i) what W^-1 gave the earlier particles.
-//
-// The true residual r = W rhat = D rhat / w + L rhat costs a sweep, so it is
-// computed only when rhat . D rhat, scaled by the ratio |r|^2 / rhat . D rhat
-// at the last check, predicts convergence.
-CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tolerance2, int max_iterations,
-                                         std::vector<Vec3>& x_vec) {
-  const std::size_t n = own_.size();
-  const Sym3* diag = diag_.data();
-  const Sym3* dinv = diag_inverse_.data();
-  // rhat, t and s (the forward sweep's W^-1 (...)) are pulled from: n + 1 entries, the last 0.
-  Vec3 *x = x_vec.data(), *rhat = rhat_.data(), *z = z_.data(), *p = p_.data(), *t = t_.data(), *ut = ut_.data(),
-       *q = q_.data(), *sv = s_.data();
-
-  // The true residual |W rhat|^2, (W rhat)_i = D_i rhat_i / w - sum of i's
-  // column blocks times rhat at their other ends.
-  const auto true_residual2 = [&] {
-    double rr = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 r = z[i] * (1 / kRelaxation) - cols_.pull(i, rhat);
-      rr += r.squaredNorm();
-    }
-    return rr;
-  };
-
-  multiply(x_vec, q_);
-  double rr = 0, rz = 0;
-  for (std::size_t i = 0; i < n; ++i) {  // rhat = W^-1 r, r = b - A x
-    const Vec3 r = b[i] - q[i];
-    rr += r.squaredNorm();
-    rhat[i] = dinv[i] * (kRelaxation * (r + cols_.pull(i, rhat)));
-    z[i] = diag[i] * rhat[i];
-    p[i] = z[i];
-    rz += rhat[i].dot(z[i]);
-  }
-  double ratio = rz > 0 ? rr / rz : 1.0;  // |r|^2 / rhat . D rhat at the last check
-  bool rr_current = true;
-  CgStats stats;
-  double beta = 0;
-  while (stats.iterations < max_iterations) {
-    if (ratio * rz <= tolerance2) {
-      if (!rr_current) {
-        rr = true_residual2();
-        ratio = rz > 0 ? rr / rz : 1.0;
-        rr_current = true;
-      }
-      if (rr <= tolerance2) break;
-    }
-    for (std::size_t i = n; i-- > 0;) {  // p = z + beta p; t = W^-T p
-      const Vec3 sum = rows_.pull(i, t);
-      ut[i] = sum;
-      p[i] = z[i] + beta * p[i];
-      t[i] = dinv[i] * (kRelaxation * (p[i] + sum));
-    }
-    double pq = 0;
-    for (std::size_t i = 0; i < n; ++i) {  // q = Ahat p = t + W^-1 (p - (2 / w - 1) D t)
-      const Vec3 acc = cols_.pull(i, sv);
-      sv[i] = dinv[i] * (kRelaxation * (acc + (kRelaxation - 1) * p[i] - (2 - kRelaxation) * ut[i]));
-      q[i] = t[i] + sv[i];
-      pq += p[i].dot(q[i]);
-    }
-    if (!(pq > 0)) break;  // converged to round-off
-    const double alpha = rz / pq;
-    double rz_next = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      x[i] += alpha * t[i];
-      rhat[i] -= alpha * q[i];
-      z[i] = diag[i] * rhat[i];
-      rz_next += rhat[i].dot(z[i]);
-    }
-    beta = rz_next / rz;
-    rz = rz_next;
-    rr_current = false;
-    ++stats.iterations;
-  }
-  if (!rr_current) rr = true_residual2();
   stats.residual2 = rr;
   return stats;
 }

@@ -24,9 +24,9 @@
 //    off-diagonal blocks in particle order, applied with Eisenstat's trick
 //    (CG on W^-1 A W^-T, W = D / w + L): one backward and one forward sweep
 //    over the springs per iteration, about the cost of a product with A,
-//    for well under half the iterations. The sweeps pull each particle's
-//    sum from its springs to later particles (backward) or to earlier ones
-//    (forward), laid out in pairs both ways (sim/spring_pairs.h); they need
+//    for well under half the iterations. The backward sweep pulls each
+//    particle's sum from its springs to later particles; the forward sweep
+//    pushes each particle's share to them (sim/spring_pairs.h); they need
 //    the springs sorted by spring_a with a < b (build_spring_model's
 //    order); otherwise the solver falls back to block Jacobi.
 // Both stop on the true residual |b - A x|, so they are equally accurate.
@@ -109,15 +109,17 @@ class SpringSystem {
   std::vector<std::int32_t> layout_a_, layout_b_;
   std::size_t layout_n_ = 0;
   // The springs' masked blocks by first particle (rows: the other end is
-  // later) and by second particle (columns: the other end is earlier).
-  PairedSide rows_, cols_;
+  // later when the springs are sorted).
+  PairedSide rows_;
   bool rows_sorted_ = false;
   // (n_particles) the mass term plus masked springs' blocks (what the
   // per-spring form of A misses), the full diagonal blocks, their inverses.
   std::vector<Sym3> own_, diag_, diag_inverse_;
   // CG scratch: (n_particles + 1, the last entry the pads' dummy, kept 0)
-  // for the vectors the sweeps pull from, (n_particles) for the others.
-  std::vector<Vec3> rhat_, t_, s_, u_;
+  // for the vectors the sweeps pull from and the pushes' accumulator (all 0
+  // between sweeps; acc_x_ takes the pushes of x in the SSOR solver's first
+  // pass), (n_particles) for the others.
+  std::vector<Vec3> rhat_, t_, s_, u_, acc_, acc_x_;
   std::vector<Vec3> r_, z_, p_, ut_, q_;
 };
 

@@ -60,6 +60,8 @@ class Stepper {
   void reset_warm_start() {
     dv_.clear();
     dv_last_.clear();
+    extrapolation_ = 1.0;
+    extrapolation2_ = 0.0;
   }
 
  private:
@@ -73,6 +75,13 @@ class Stepper {
   // Scratch (n_particles): forces, saved state, the implicit step's dv, the
   // one before (the warm start extrapolates them) and right-hand side.
   std::vector<Vec3> f_, saved_x_, saved_v_, dv_, dv_last_, b_;
+  // (n_particles) the dv before dv_last_, and the last two changes of dv,
+  // along which the warm start extrapolates.
+  std::vector<Vec3> dv_before_, dv_change_, dv_change_before_;
+  // The warm start's factors along dv_change_ and dv_change_before_: those
+  // that would have predicted the last solution best (least squares),
+  // clamped to [0, 2] and [-1, 1] (linear: 1, 0; quadratic: 2, -1).
+  double extrapolation_ = 1.0, extrapolation2_ = 0.0;
   // (n_particles) the one-pass explicit sub-step's reactions, all zero between sub-steps.
   std::vector<Vec3> acc_;
   RunPairs run_pairs_;  // the model's springs in pairs for the one-pass sub-step

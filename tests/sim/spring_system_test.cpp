@@ -83,6 +83,46 @@ TEST_P(SpringSystemProduct, MatchesTheForcesDerivatives) {
 
 INSTANTIATE_TEST_SUITE_P(SortedAndShuffled, SpringSystemProduct, ::testing::Bool());
 
+class SpringSystemRightHandSide : public ::testing::TestWithParam<bool> {};
+
+// b = h (f + h K v): the forces at the state plus h times the derivative
+// of the springs' elastic forces in x along v (central differences, the
+// dashpots taken out: K leaves out their dependence on x), 0 at fixed
+// particles.
+TEST_P(SpringSystemRightHandSide, MatchesTheForcesAndTheirDerivative) {
+  Stretched s = stretched_box(GetParam());
+  const std::size_t n = s.model.num_particles();
+  const double h = 1.0 / 60.0, eps = 1e-7;
+  std::mt19937 rng(6);
+  std::normal_distribution<double> g(0.0, 0.1);
+  for (std::size_t i = 0; i < n; ++i)
+    s.state.v[i] = s.model.inv_mass[i] == 0 ? Vec3::Zero() : Vec3(g(rng), g(rng), g(rng));
+  const Environment env;
+  std::vector<Vec3> body, b(n), f, f_plus, f_minus;
+  compute_body_forces(s.model, env, s.state, body);
+  SpringSystem system;
+  system.assemble(s.model, s.state, body, h, b);
+  compute_forces(s.model, env, s.state, f);
+  SpringState plus = s.state, minus = s.state;
+  for (std::size_t i = 0; i < n; ++i) {
+    plus.x[i] += eps * s.state.v[i];
+    minus.x[i] -= eps * s.state.v[i];
+  }
+  SpringModel elastic = s.model;
+  std::fill(elastic.damping.begin(), elastic.damping.end(), 0.0);
+  compute_forces(elastic, env, plus, f_plus);
+  compute_forces(elastic, env, minus, f_minus);
+  double scale = 0;
+  std::vector<Vec3> expected(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    expected[i] = s.model.inv_mass[i] == 0 ? Vec3::Zero() : Vec3(h * (f[i] + h * (f_plus[i] - f_minus[i]) / (2 * eps)));
+    scale = std::max(scale, expected[i].norm());
+  }
+  for (std::size_t i = 0; i < n; ++i) EXPECT_LT((b[i] - expected[i]).norm(), 1e-6 * scale) << i;
+}
+
+INSTANTIATE_TEST_SUITE_P(SortedAndShuffled, SpringSystemRightHandSide, ::testing::Bool());
+
 // One SpringSystem reused on models of the same size but other springs
 // (what a rebuild after a cut can give) lays them out anew each time.
 TEST(SpringSystemLayout, FollowsTheModelsSprings) {

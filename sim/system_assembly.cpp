@@ -1,0 +1,173 @@
+// SpringSystem's assembly: the paired layout kept up to date with the
+// model's springs, then A's blocks, diagonal and b built in one pass over
+// the pairs (the system and its solvers: sim/spring_system.cpp).
+
+#include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "sim/spring_system.h"
+
+namespace mtcut::sim {
+namespace {
+
+constexpr double kTinyLength2 = 1e-300;  // m^2, below any real spring's
+
+// Lane-wise square root (SSE2's sqrtpd on x86-64).
+Lanes2 sqrt_lanes(Lanes2 u) {
+#if defined(__SSE2__)
+  return _mm_sqrt_pd(u);
+#else
+  return Lanes2{std::sqrt(u[0]), std::sqrt(u[1])};
+#endif
+}
+
+// Lane-wise max(0, u).
+Lanes2 positive_part(Lanes2 u) {
+#if defined(__SSE2__)
+  return _mm_max_pd(u, Lanes2{0.0, 0.0});
+#else
+  return Lanes2{u[0] > 0 ? u[0] : 0.0, u[1] > 0 ? u[1] : 0.0};
+#endif
+}
+
+void add_block(Sym3& d, const SpringBlock& blk) {
+  const Vec3& w = blk.w;
+  d.xx += w.x() * w.x() + blk.across;
+  d.xy += w.x() * w.y();
+  d.xz += w.x() * w.z();
+  d.yy += w.y() * w.y() + blk.across;
+  d.yz += w.y() * w.z();
+  d.zz += w.z() * w.z() + blk.across;
+}
+
+}  // namespace
+
+void SpringSystem::update_layout(const SpringModel& model) {
+  const std::size_t n = model.num_particles(), m = model.num_springs();
+  if (layout_n_ == n && layout_a_ == model.spring_a && layout_b_ == model.spring_b) return;
+  resize(n, m);
+  layout_n_ = n;
+  layout_a_ = model.spring_a;
+  layout_b_ = model.spring_b;
+  rows_sorted_ = true;
+  for (std::size_t s = 0; s < m; ++s)
+    if (model.spring_a[s] >= model.spring_b[s] || (s > 0 && model.spring_a[s - 1] > model.spring_a[s]))
+      rows_sorted_ = false;
+  rows_.build(n, model.spring_a, model.spring_b);
+}
+
+// b = h (f0 + h K v0), K v0 = -sum_s J_s (v_a - v_b), J_s = k (n n^T + t (I - n n^T)).
+// Spring s adds g_s to b_a and -g_s to b_b: its force (Hooke + dashpot, as
+// compute_forces) times h, minus h^2 J_s (v_a - v_b).
+void SpringSystem::assemble(const SpringModel& model, const SpringState& state, const std::vector<Vec3>& f, double h,
+                            std::vector<Vec3>& b) {
+  const std::size_t n = model.num_particles();
+  update_layout(model);
+  const double h2 = h * h;
+
+  const double mass_factor = 1.0 + h * model.mass_damping;
+  const double* inv_mass = model.inv_mass.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    own_[i] = Sym3::scaled_identity(model.mass[i] * mass_factor);
+    diag_[i] = own_[i];
+    b[i] = h * f[i];
+  }
+
+  // One pass over each particle a's pairs of springs (a, c): B_s into the
+  // diagonal blocks and the layout, g_s into b; springs at fixed particles
+  // masked. Two springs per SSE2 register: one sqrtpd and one divpd serve
+  // both. a's shares of its diagonal block and of b are summed in
+  // registers, lane by lane. A pad lane repeats lane 0's other end with
+  // stiffness and damping 0: everything it adds is exactly 0.
+  const std::int32_t *start = rows_.start.data(), *other = rows_.other.data(), *lane_spring = rows_.lane_spring.data();
+  BlockPair* blocks = rows_.blocks.data();
+  const Vec3 *x = state.x.data(), *v = state.v.data();
+  const double *rest_length = model.rest_length.data(), *stiffness = model.stiffness.data(),
+               *damping = model.damping.data();
+  const Lanes2 one = {1.0, 1.0}, tiny = {kTinyLength2, kTinyLength2};
+  for (std::size_t a = 0; a < n; ++a) {
+    const Vec3 xa = x[a], va = v[a];
+    const bool a_fixed = inv_mass[a] == 0;
+    Lanes2 bx = {0, 0}, by = {0, 0}, bz = {0, 0};
+    Lanes2 dxx = {0, 0}, dxy = {0, 0}, dxz = {0, 0}, dyy = {0, 0}, dyz = {0, 0}, dzz = {0, 0};
+    for (std::int32_t k = start[a]; k < start[a + 1]; ++k) {
+      const std::int32_t c0 = other[2 * k], s0 = lane_spring[2 * k];
+      const bool pad = lane_spring[2 * k + 1] < 0;
+      const std::int32_t c1 = pad ? c0 : other[2 * k + 1], s1 = pad ? s0 : lane_spring[2 * k + 1];
+      const double on = pad ? 0.0 : 1.0;
+      const Vec3 &x0 = x[c0], &x1 = x[c1], &v0 = v[c0], &v1 = v[c1];
+      const Lanes2 dx = Lanes2{x0.x(), x1.x()} - xa.x(), dy = Lanes2{x0.y(), x1.y()} - xa.y(),
+                   dz = Lanes2{x0.z(), x1.z()} - xa.z();
+      // + kTinyLength2 is exact for any real spring, and a zero-length one
+      // gets n = 0 and adds nothing; t = max(0, 1 - L / l), branch-free.
+      const Lanes2 length2 = dx * dx + dy * dy + dz * dz;
+      const Lanes2 inv_length = one / sqrt_lanes(length2 + tiny);
+      const Lanes2 nx = dx * inv_length, ny = dy * inv_length, nz = dz * inv_length;
+      const Lanes2 k_s = Lanes2{stiffness[s0], on * stiffness[s1]};
+      const Lanes2 rest = Lanes2{rest_length[s0], rest_length[s1]};
+      const Lanes2 t = positive_part(one - rest * inv_length);
+      const Lanes2 along = h * Lanes2{damping[s0], on * damping[s1]} + h2 * k_s * (one - t), across = h2 * k_s * t;
+      const Lanes2 ux = va.x() - Lanes2{v0.x(), v1.x()}, uy = va.y() - Lanes2{v0.y(), v1.y()},
+                   uz = va.z() - Lanes2{v0.z(), v1.z()};
+      const Lanes2 dn = nx * ux + ny * uy + nz * uz;
+      // g_s = h f_a = h (k (l - L) - c n . dv0) n, l = |d|^2 / |d|, minus h^2 J_s dv0.
+      const Lanes2 coef = h * k_s * (length2 * inv_length - rest) - along * dn;
+      const Lanes2 gx = coef * nx - across * ux, gy = coef * ny - across * uy, gz = coef * nz - across * uz;
+      bx += gx;
+      by += gy;
+      bz += gz;
+      b[c0] -= Vec3(gx[0], gy[0], gz[0]);
+      b[c1] -= Vec3(gx[1], gy[1], gz[1]);
+      const Lanes2 root = sqrt_lanes(along);
+      BlockPair blk = {root * nx, root * ny, root * nz, across};
+      const Lanes2 bxx = blk.wx * blk.wx + across, bxy = blk.wx * blk.wy, bxz = blk.wx * blk.wz,
+                   byy = blk.wy * blk.wy + across, byz = blk.wy * blk.wz, bzz = blk.wz * blk.wz + across;
+      dxx += bxx;
+      dxy += bxy;
+      dxz += bxz;
+      dyy += byy;
+      dyz += byz;
+      dzz += bzz;
+      for (int lane = 0; lane < 2; ++lane) {
+        Sym3& d = diag_[static_cast<std::size_t>(lane ? c1 : c0)];
+        d.xx += bxx[lane];
+        d.xy += bxy[lane];
+        d.xz += bxz[lane];
+        d.yy += byy[lane];
+        d.yz += byz[lane];
+        d.zz += bzz[lane];
+      }
+      if (a_fixed || inv_mass[c0] == 0 || inv_mass[c1] == 0) [[unlikely]] {  // masked: fixed rows decouple
+        for (int lane = 0; lane < 2; ++lane) {
+          const auto c = static_cast<std::size_t>(lane ? c1 : c0);
+          if (!a_fixed && inv_mass[c] != 0) continue;
+          const SpringBlock one_block{Vec3(blk.wx[lane], blk.wy[lane], blk.wz[lane]), blk.across[lane]};
+          if (!a_fixed) add_block(own_[a], one_block);
+          if (inv_mass[c] != 0) add_block(own_[c], one_block);
+          blk.wx[lane] = blk.wy[lane] = blk.wz[lane] = blk.across[lane] = 0;
+        }
+      }
+      blocks[k] = blk;
+    }
+    b[a] += Vec3(bx[0] + bx[1], by[0] + by[1], bz[0] + bz[1]);
+    Sym3& d = diag_[a];
+    d.xx += dxx[0] + dxx[1];
+    d.xy += dxy[0] + dxy[1];
+    d.xz += dxz[0] + dxz[1];
+    d.yy += dyy[0] + dyy[1];
+    d.yz += dyz[0] + dyz[1];
+    d.zz += dzz[0] + dzz[1];
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (inv_mass[i] == 0) {
+      b[i].setZero();
+      diag_inverse_[i] = Sym3{};
+    } else {
+      diag_inverse_[i] = diag_[i].inverse();
+    }
+  }
+}
+
+}  // namespace mtcut::sim
