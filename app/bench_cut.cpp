@@ -9,6 +9,7 @@
 #include "cut/split_table.h"
 #include "engine/input_error.h"
 #include "engine/mesh_loader.h"
+#include "engine/quantiles.h"
 
 namespace mtcut::app {
 namespace {
@@ -69,12 +70,6 @@ std::string default_liver() {
   if (!std::filesystem::exists(path))
     throw engine::InputError(path + ": the real liver mesh is not there (give --mesh PATH)");
   return path;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 // Counts of one scheme over every cut (taken in the warm-up run) and its
@@ -144,8 +139,8 @@ nlohmann::ordered_json run_cut_bench(const CutBenchDef& def) {
         {"split_tets", t.split_tets},
         {"new_tets", t.new_tets},
         {"new_tets_per_split_tet", t.split_tets ? static_cast<double>(t.new_tets) / t.split_tets : 0.0},
-        {"ns_per_split_tet", median(t.ns_per_split_tet)},
-        {"split_ns_per_split_tet", median(t.split_ns_per_split_tet)}};
+        {"ns_per_split_tet", engine::median(t.ns_per_split_tet)},
+        {"split_ns_per_split_tet", engine::median(t.split_ns_per_split_tet)}};
   }
   out["ratio_new_tets_bielser17_over_lut"] =
       tally[0].new_tets ? static_cast<double>(tally[1].new_tets) / static_cast<double>(tally[0].new_tets) : 0.0;

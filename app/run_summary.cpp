@@ -7,15 +7,10 @@
 #include <sstream>
 
 #include "app/run_piece_report.h"
+#include "engine/quantiles.h"
 
 namespace mtcut::app {
 namespace {
-
-// The value of rank ceil(q n) in the sorted values (nearest-rank percentile).
-double percentile(const std::vector<double>& sorted, double q) {
-  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(sorted.size())));
-  return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
-}
 
 // mean, median, 95th and 99th percentiles and max of a series (null when empty).
 nlohmann::ordered_json distribution(std::vector<double> values) {
@@ -23,9 +18,9 @@ nlohmann::ordered_json distribution(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const double mean = std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
   return {{"mean", mean},
-          {"p50", percentile(values, 0.50)},
-          {"p95", percentile(values, 0.95)},
-          {"p99", percentile(values, 0.99)},
+          {"p50", engine::nearest_rank<double>(values, 0.50)},
+          {"p95", engine::nearest_rank<double>(values, 0.95)},
+          {"p99", engine::nearest_rank<double>(values, 0.99)},
           {"max", values.back()}};
 }
 

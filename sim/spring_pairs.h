@@ -17,20 +17,18 @@
 // the dummy particle n, which every vector the sweeps pull from keeps at 0
 // and every accumulator has as a last entry that is never read.
 //
-// The layout (starts, other ends, slot of each spring) depends only on the
+// The layout (starts, other ends, each lane's spring) depends only on the
 // springs' ends; it is rebuilt when they change, the blocks every assembly.
 
 #include <cstdint>
 #include <vector>
 
 #include "engine/predicates.h"
+#include "sim/lanes2.h"
 
 namespace mtcut::sim {
 
 using engine::Vec3;
-
-// Two lanes of doubles (GCC/Clang vector extension: SSE2 on x86-64).
-using Lanes2 = double __attribute__((vector_size(16)));
 
 // Two springs' blocks B = w w^T + across I, lane by lane.
 struct BlockPair {

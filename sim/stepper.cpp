@@ -20,15 +20,15 @@ bool state_is_sane(const SpringState& state, double max_speed) {
 
 }  // namespace
 
+void Stepper::restart_warm_start(std::size_t n) {
+  for (auto* v : {&dv_, &dv_last_, &dv_before_}) v->assign(n, Vec3::Zero());
+  extrapolation_ = 1.0;
+  extrapolation2_ = 0.0;
+}
+
 void Stepper::resize(const SpringModel& model) {
   const std::size_t n = model.num_particles();
-  if (dv_.size() != n) {  // a new model: no warm start
-    dv_.assign(n, Vec3::Zero());
-    dv_last_.assign(n, Vec3::Zero());
-    dv_before_.assign(n, Vec3::Zero());
-    extrapolation_ = 1.0;
-    extrapolation2_ = 0.0;
-  }
+  if (dv_.size() != n) restart_warm_start(n);  // a new model: no warm start
   for (auto* v : {&f_, &saved_x_, &saved_v_, &b_, &dv_change_, &dv_change_before_}) v->resize(n);
   if (acc_.size() != n) acc_.assign(n, Vec3::Zero());
 }
@@ -63,11 +63,7 @@ StepReport Stepper::step(const SpringModel& model, const Environment& env, const
   if (!state_is_sane(state, def.max_speed)) {
     std::copy(saved_x_.begin(), saved_x_.end(), state.x.begin());
     std::copy(saved_v_.begin(), saved_v_.end(), state.v.begin());
-    std::fill(dv_.begin(), dv_.end(), Vec3::Zero());
-    std::fill(dv_last_.begin(), dv_last_.end(), Vec3::Zero());
-    extrapolation_ = 1.0;
-    extrapolation2_ = 0.0;
-    std::fill(dv_before_.begin(), dv_before_.end(), Vec3::Zero());
+    restart_warm_start(dv_.size());
     ++refused_steps_;
     report.accepted = false;
   }

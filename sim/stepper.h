@@ -57,14 +57,12 @@ class Stepper {
 
   std::uint64_t refused_steps() const { return refused_steps_; }
   // Forgets the warm start (call when particles are renumbered).
-  void reset_warm_start() {
-    dv_.clear();
-    dv_last_.clear();
-    extrapolation_ = 1.0;
-    extrapolation2_ = 0.0;
-  }
+  void reset_warm_start() { restart_warm_start(0); }
 
  private:
+  // dv's history (n entries, zero) and the extrapolation factors back to
+  // their start: the first step after it extrapolates nothing.
+  void restart_warm_start(std::size_t n);
   void substep_symplectic(const SpringModel& model, const Environment& env, SpringState& state, double h);
   // Returns CG iterations; writes the final relative residual.
   int substep_implicit(const SpringModel& model, const Environment& env, const IntegratorDef& def,

@@ -2,28 +2,12 @@
 
 #include <cmath>
 #include <cstdint>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 #include "sim/contacts.h"
 #include "sim/forces.h"
+#include "sim/lanes2.h"
 
 namespace mtcut::sim {
-namespace {
-
-constexpr double kTinyLength2 = 1e-300;  // m^2, below any real spring's
-
-// Lane-wise square root (SSE2's sqrtpd on x86-64).
-Lanes2 sqrt_lanes(Lanes2 u) {
-#if defined(__SSE2__)
-  return _mm_sqrt_pd(u);
-#else
-  return Lanes2{std::sqrt(u[0]), std::sqrt(u[1])};
-#endif
-}
-
-}  // namespace
 
 bool springs_in_run_order(const SpringModel& model) {
   const std::size_t m = model.num_springs();

@@ -2,35 +2,12 @@
 // model's springs, then A's blocks, diagonal and b built in one pass over
 // the pairs (the system and its solvers: sim/spring_system.cpp).
 
-#include <cmath>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include "sim/spring_system.h"
+
+#include "sim/lanes2.h"
 
 namespace mtcut::sim {
 namespace {
-
-constexpr double kTinyLength2 = 1e-300;  // m^2, below any real spring's
-
-// Lane-wise square root (SSE2's sqrtpd on x86-64).
-Lanes2 sqrt_lanes(Lanes2 u) {
-#if defined(__SSE2__)
-  return _mm_sqrt_pd(u);
-#else
-  return Lanes2{std::sqrt(u[0]), std::sqrt(u[1])};
-#endif
-}
-
-// Lane-wise max(0, u).
-Lanes2 positive_part(Lanes2 u) {
-#if defined(__SSE2__)
-  return _mm_max_pd(u, Lanes2{0.0, 0.0});
-#else
-  return Lanes2{u[0] > 0 ? u[0] : 0.0, u[1] > 0 ? u[1] : 0.0};
-#endif
-}
 
 void add_block(Sym3& d, const SpringBlock& blk) {
   const Vec3& w = blk.w;

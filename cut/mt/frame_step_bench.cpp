@@ -5,16 +5,10 @@
 #include <vector>
 
 #include "cut/mt/mt_cut.h"
+#include "engine/quantiles.h"
 
 namespace mtcut::cut {
 namespace {
-
-// The value at fraction q of the sorted values (nearest rank).
-template <class T>
-T quantile(std::vector<T> v, double q) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? T{} : v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))];
-}
 
 // The quad the blade sweeps in frame `step`: the blade reaches from above
 // the model's top down into it, and moves along a gentle curve across the
@@ -59,15 +53,18 @@ FrameStepResult run_frame_steps(const engine::Mt& mt, const FrameStepDef& def, e
     if (after && run == def.runs) *after = std::move(copy);
   }
   std::vector<double> ms;
-  for (const auto& r : runs) ms.push_back(quantile(r, 0.5));
+  for (const auto& r : runs) ms.push_back(engine::median(r));
+  std::sort(ms.begin(), ms.end());
+  std::sort(split.begin(), split.end());
+  std::sort(made.begin(), made.end());
   FrameStepResult result;
   result.steps = steps;
-  result.split_tets_median = quantile(split, 0.5);
-  result.split_tets_max = quantile(split, 1.0);
-  result.new_tets_median = quantile(made, 0.5);
-  result.ms_median = quantile(ms, 0.5);
-  result.ms_p90 = quantile(ms, 0.9);
-  result.ms_max = quantile(ms, 1.0);
+  result.split_tets_median = engine::nearest_rank<std::size_t>(split, 0.5);
+  result.split_tets_max = split.back();
+  result.new_tets_median = engine::nearest_rank<std::size_t>(made, 0.5);
+  result.ms_median = engine::median(ms);
+  result.ms_p90 = engine::nearest_rank<double>(ms, 0.9);
+  result.ms_max = ms.back();
   return result;
 }
 

@@ -30,7 +30,9 @@ struct FrameStepDef {
 
 struct FrameStepResult {
   std::size_t steps = 0;
-  std::size_t split_tets_median = 0, split_tets_max = 0;  // tets replaced or relabelled, every resolution
+  // Tets replaced or relabelled at every resolution, per step: nearest-rank
+  // median (a step's count) and max over the steps; likewise new tets.
+  std::size_t split_tets_median = 0, split_tets_max = 0;
   std::size_t new_tets_median = 0;
   // Find + split + DAG update of one step (its median over runs), over the steps.
   double ms_median = 0, ms_p90 = 0, ms_max = 0;

@@ -4,15 +4,10 @@
 
 #include "cut/mt/mt_cut.h"
 #include "cut/mt/mt_pieces.h"
+#include "engine/quantiles.h"
 
 namespace mtcut::cut {
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 CutPolygon table1_polygon(const engine::Mt& mt, double half_size) {
   engine::Aabb box;
@@ -65,9 +60,9 @@ Table1Result run_table1(const engine::Mt& mt, const Table1Def& def) {
       dag_ms.push_back(dag);
       total_ms.push_back(split + dag);
     }
-    row.split_ms = median(split_ms);
-    row.dag_update_ms = median(dag_ms);
-    row.total_ms = median(total_ms);
+    row.split_ms = engine::median(split_ms);
+    row.dag_update_ms = engine::median(dag_ms);
+    row.total_ms = engine::median(total_ms);
     result.rows.push_back(row);
   }
   return result;

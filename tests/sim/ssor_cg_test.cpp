@@ -36,24 +36,14 @@ RandomSystem random_system(unsigned seed) {
   RandomSystem c;
   c.model = test::fixed_test_box();
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> log_scale(std::log(0.1), std::log(10.0)), jitter(-0.003, 0.003),
-      speed(-0.2, 0.2);
+  std::uniform_real_distribution<double> log_scale(std::log(0.1), std::log(10.0));
   for (std::size_t s = 0; s < c.model.num_springs(); ++s) {
     const double scale = std::exp(log_scale(rng));
     c.model.stiffness[s] *= scale;
     c.model.damping[s] *= scale;
   }
   EXPECT_TRUE(c.model.validate().ok());
-  SpringState state = rest_state(c.model);
-  for (std::size_t i = 0; i < c.model.num_particles(); ++i) {
-    if (c.model.inv_mass[i] == 0) continue;
-    state.x[i] += Vec3(jitter(rng), jitter(rng), jitter(rng));
-    state.v[i] = Vec3(speed(rng), speed(rng), speed(rng));
-  }
-  std::vector<Vec3> f;
-  compute_body_forces(c.model, Environment{}, state, f);
-  c.b.resize(c.model.num_particles());
-  c.system.assemble(c.model, state, f, kDt, c.b);
+  test::assemble_system(c.model, test::jittered_moving_state(c.model, rng), kDt, c.system, c.b);
   EXPECT_TRUE(c.system.rows_sorted());
   return c;
 }

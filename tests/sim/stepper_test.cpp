@@ -203,18 +203,9 @@ SystemCase system_case(bool shuffle_springs) {
   if (shuffle_springs) test::shuffle_springs(c.model, 5);  // a hand-built order: not grouped by first particle
   EXPECT_TRUE(c.model.validate().ok());
   EXPECT_GT(c.model.num_fixed(), 0u);
-  c.state = rest_state(c.model);
   std::mt19937 rng(3);
-  std::uniform_real_distribution<double> jitter(-0.003, 0.003), speed(-0.2, 0.2);
-  for (std::size_t i = 0; i < c.model.num_particles(); ++i) {
-    if (c.model.inv_mass[i] == 0) continue;
-    c.state.x[i] += Vec3(jitter(rng), jitter(rng), jitter(rng));
-    c.state.v[i] = Vec3(speed(rng), speed(rng), speed(rng));
-  }
-  std::vector<Vec3> f;
-  compute_body_forces(c.model, Environment{}, c.state, f);
-  c.b.resize(c.model.num_particles());
-  c.system.assemble(c.model, c.state, f, kDt, c.b);
+  c.state = test::jittered_moving_state(c.model, rng);
+  test::assemble_system(c.model, c.state, kDt, c.system, c.b);
   return c;
 }
 

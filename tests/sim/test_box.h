@@ -1,7 +1,8 @@
 #pragma once
 // The small spring model the solver tests share: a 0.1 x 0.05 x 0.05 box of
-// about 400 tets, stiff and damped, with its x = +0.05 face fixed; and a
-// shuffle of its springs (an order not grouped by first particle).
+// about 400 tets, stiff and damped, with its x = +0.05 face fixed; a
+// shuffle of its springs (an order not grouped by first particle); and a
+// jittered, moving state with its implicit system.
 
 #include <algorithm>
 #include <numeric>
@@ -9,8 +10,11 @@
 #include <vector>
 
 #include "engine/mesh_loader.h"
+#include "sim/environment.h"
 #include "sim/fixed_region.h"
+#include "sim/forces.h"
 #include "sim/spring_model.h"
+#include "sim/spring_system.h"
 
 namespace mtcut::sim::test {
 
@@ -46,6 +50,29 @@ inline void shuffle_springs(SpringModel& model, unsigned seed) {
     model.stiffness[k] = m.stiffness[order[k]];
     model.damping[k] = m.damping[order[k]];
   }
+}
+
+// The rest state of `model` with every free particle moved by up to 3 mm
+// and given up to 0.2 m/s per axis, drawn from `rng`.
+inline SpringState jittered_moving_state(const SpringModel& model, std::mt19937& rng) {
+  std::uniform_real_distribution<double> jitter(-0.003, 0.003), speed(-0.2, 0.2);
+  SpringState state = rest_state(model);
+  for (std::size_t i = 0; i < model.num_particles(); ++i) {
+    if (model.inv_mass[i] == 0) continue;
+    state.x[i] += Vec3(jitter(rng), jitter(rng), jitter(rng));
+    state.v[i] = Vec3(speed(rng), speed(rng), speed(rng));
+  }
+  return state;
+}
+
+// Assembles `system` and its right-hand side `b` for `model` at `state`
+// over one step of `dt`, with no force but the body forces (gravity off).
+inline void assemble_system(const SpringModel& model, const SpringState& state, double dt, SpringSystem& system,
+                            std::vector<Vec3>& b) {
+  std::vector<Vec3> f;
+  compute_body_forces(model, Environment{}, state, f);
+  b.resize(model.num_particles());
+  system.assemble(model, state, f, dt, b);
 }
 
 }  // namespace mtcut::sim::test

@@ -8,18 +8,20 @@
 namespace mtcut::test {
 namespace {
 
-// The shape of the experiment (not its timings): every step is a small cut
-// (a tenth of the MT at most), each step cuts something, and the MT the
-// dashed stroke leaves is valid, grown, and still in one piece.
+// The shape of the experiment the bench runs (its default stroke, not its
+// timings), on the MT it runs on (the paper preset) and on the real liver:
+// every step is a small cut (a tenth of the MT at most), most steps cut
+// something, and the MT the dashed stroke leaves is valid, grown, and in one
+// piece. (Not on the 1,500-tet builtin ellipsoid: its tets are many times
+// wider than a frame's quad, and most of its steps cut nothing.)
 TEST(FrameStepBench, DashedStrokeMakesSmallCutsAndLeavesAValidMt) {
-  for (const std::string name : {"ellipsoid", "liver"}) {
+  for (const std::string name : {"paper", "liver"}) {
     const Mt& mt = cut_test_mt(name);
     cut::FrameStepDef def;
-    def.steps = 12;
     def.runs = 1;
     Mt after;
     const cut::FrameStepResult r = cut::run_frame_steps(mt, def, &after);
-    EXPECT_EQ(r.steps, 12u) << name;
+    EXPECT_EQ(r.steps, static_cast<std::size_t>(def.steps)) << name;
     EXPECT_GT(r.split_tets_median, 0u) << name;
     EXPECT_LE(r.split_tets_median, r.split_tets_max) << name;
     EXPECT_LT(r.split_tets_max, mt.num_live_tets() / 10) << name;
