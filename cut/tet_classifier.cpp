@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "engine/tet_geometry.h"
 
@@ -87,12 +88,33 @@ CutCase TetConfig::cut_case() const {
 
 // ---- CutClassifier -----------------------------------------------------------
 
-CutClassifier::CutClassifier(const CutPolygon& polygon, std::span<const Vec3> positions, const ClassifierDef& def)
+CutClassifier::CutClassifier(const CutPolygon& polygon, std::span<const Vec3> positions, const ClassifierDef& def,
+                             Scratch* scratch)
     : polygon_(polygon),
       positions_(positions),
       snap_(ClassifierDef::effective_snap(def.snap)),
       face_clamp_(ClassifierDef::face_clamp(def.snap)),
-      info_(positions.size()) {}
+      own_scratch_(scratch ? nullptr : std::make_unique<Scratch>()),
+      scratch_(scratch ? scratch : own_scratch_.get()) {
+  if (scratch_->in_use) throw std::logic_error("CutClassifier: the scratch is in use by another classifier");
+  scratch_->in_use = true;
+  if (scratch_->info.size() < positions.size()) scratch_->info.resize(positions.size());
+}
+
+engine::ValidationReport CutClassifier::Scratch::validate() const {
+  engine::ValidationReport report;
+  if (in_use) report.add("CutClassifier::Scratch: still held by a classifier");
+  if (!dirty.empty()) report.add("CutClassifier::Scratch: " + std::to_string(dirty.size()) + " entries listed dirty");
+  for (std::size_t v = 0; v < info.size(); ++v)
+    if (!(info[v] == VertexInfo{})) report.add("CutClassifier::Scratch: vertex " + std::to_string(v) + " not reset");
+  return report;
+}
+
+CutClassifier::~CutClassifier() {
+  for (VertId v : scratch_->dirty) scratch_->info[v.index()] = VertexInfo{};
+  scratch_->dirty.clear();
+  scratch_->in_use = false;
+}
 
 std::uint64_t CutClassifier::edge_key(VertId a, VertId b) {
   const auto lo = static_cast<std::uint32_t>(std::min(a.value, b.value));
@@ -100,29 +122,27 @@ std::uint64_t CutClassifier::edge_key(VertId a, VertId b) {
   return static_cast<std::uint64_t>(lo) << 32 | hi;
 }
 
-std::int8_t CutClassifier::raw_side(VertId v) const {
-  VertexInfo& info = info_[v.index()];
-  if (info.raw == 2) {
-    info.raw = static_cast<std::int8_t>(polygon_.side(positions_[v.index()]));
-    info.distance = polygon_.signed_distance(positions_[v.index()]);
-  }
+std::int8_t CutClassifier::compute_side(VertId v) const {
+  VertexInfo& info = edit(v);
+  info.raw = static_cast<std::int8_t>(polygon_.side(positions_[v.index()]));
+  info.distance = polygon_.signed_distance(positions_[v.index()]);
   return info.raw;
 }
 
 double CutClassifier::distance(VertId v) const {
   raw_side(v);
-  return info_[v.index()].distance;
+  return at(v).distance;
 }
 
 std::int8_t CutClassifier::side_for_crossings(VertId v) const {
-  if (info_[v.index()].pulled) return 0;
+  if (at(v).pulled) return 0;
   const std::int8_t raw = raw_side(v);
-  return raw == 0 && info_[v.index()].vetoed ? 1 : raw;  // a vetoed vertex on the plane counts as positive
+  return raw == 0 && at(v).vetoed ? 1 : raw;  // a vetoed vertex on the plane counts as positive
 }
 
 void CutClassifier::pull_in(VertId v) {
   assert(touched_.empty());
-  if (!info_[v.index()].requested_off) info_[v.index()].pulled = true;
+  if (!at(v).requested_off) edit(v).pulled = true;
 }
 
 double CutClassifier::raw_parameter(VertId a, VertId b) const {
@@ -135,8 +155,9 @@ double CutClassifier::raw_parameter(VertId a, VertId b) const {
 
 void CutClassifier::veto(VertId v) {
   assert(touched_.empty());
-  info_[v.index()].vetoed = true;
-  info_[v.index()].requested_off = true;
+  VertexInfo& info = edit(v);
+  info.vetoed = true;
+  info.requested_off = true;
 }
 
 std::array<std::int8_t, 4> CutClassifier::crossing_sides(const Tet& tet) const {
@@ -158,36 +179,38 @@ bool CutClassifier::add_candidate(const Tet& tet) {
 
   std::array<double, 4> d;
   for (int i = 0; i < 4; ++i) d[i] = distance(tet[i]);  // crossing_sides computed them
+  std::array<double, 4> reach2{};  // longest edge at each corner, squared
+  for (int k = 0; k < 6; ++k) {
+    const int a = kTetEdges[k][0], b = kTetEdges[k][1];
+    const double length2 = std::max((positions_[tet[a].index()] - positions_[tet[b].index()]).squaredNorm(),
+                                    std::numeric_limits<double>::min());
+    reach2[a] = std::max(reach2[a], length2);
+    reach2[b] = std::max(reach2[b], length2);
+  }
   for (int i = 0; i < 4; ++i) {
-    VertexInfo& info = info_[tet[i].index()];
+    VertexInfo& info = edit(tet[i]);
     if (info.reach2 == 0) touched_.push_back(tet[i]);
-    if (s[i] == 0) put_on(tet[i]);  // vetoed vertices on the plane count as positive (s = 1)
+    info.reach2 = std::max(info.reach2, reach2[i]);
     for (int j = 0; j < 4; ++j)
       if (j != i) info.lean += d[j];
+    if (s[i] == 0) put_on(tet[i]);  // vetoed vertices on the plane count as positive (s = 1)
   }
   for (int k = 0; k < 6; ++k) {
     const VertId a = tet[kTetEdges[k][0]], b = tet[kTetEdges[k][1]];
-    const Vec3& pa = positions_[a.index()];
-    const Vec3& pb = positions_[b.index()];
-    const double length2 = std::max((pa - pb).squaredNorm(), std::numeric_limits<double>::min());
-    for (VertId v : {a, b}) {
-      VertexInfo& info = info_[v.index()];
-      info.reach2 = std::max(info.reach2, length2);
-    }
     if (s[kTetEdges[k][0]] * s[kTetEdges[k][1]] >= 0) continue;
     auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
     if (fresh) it->second.t = raw_parameter(a, b);
     const double t = it->second.t;
     const VertId lo = a < b ? a : b, hi = a < b ? b : a;
-    if (t < snap_ && !info_[lo.index()].vetoed) put_on(lo);
-    if (t > 1 - snap_ && !info_[hi.index()].vetoed) put_on(hi);
+    if (t < snap_ && !at(lo).vetoed) put_on(lo);
+    if (t > 1 - snap_ && !at(hi).vetoed) put_on(hi);
   }
   return true;
 }
 
 void CutClassifier::put_on(VertId v) {
-  VertexInfo& info = info_[v.index()];
-  if (info.on) return;
+  if (at(v).on) return;
+  VertexInfo& info = edit(v);
   info.on = true;
   new_on_.push_back(v);
 }
@@ -200,7 +223,7 @@ std::vector<VertId> CutClassifier::take_new_on_vertices() {
 }
 
 void CutClassifier::keep_off(VertId v) {
-  VertexInfo& info = info_[v.index()];
+  VertexInfo& info = edit(v);
   info.vetoed = true;
   const double d = distance(v);
   // On the plane to rounding: the side its neighbours are on.
@@ -214,7 +237,7 @@ void CutClassifier::finalize() {
   assert(!finalized_);
   finalized_ = true;
   for (VertId v : touched_) {
-    VertexInfo& info = info_[v.index()];
+    VertexInfo& info = edit(v);
     if (info.vetoed) keep_off(v);
     if (!info.on) continue;
     const Vec3& p = positions_[v.index()];
@@ -235,7 +258,7 @@ void CutClassifier::finalize() {
 }
 
 VertexState CutClassifier::state(VertId v) const {
-  const VertexInfo& info = info_[v.index()];
+  const VertexInfo& info = at(v);
   if (finalized_ && info.on) return VertexState::kOnActive;
   if (info.kept_side != 0) return info.kept_side < 0 ? VertexState::kNeg : VertexState::kPos;
   // Exactly on the plane but kept off the cut, or never part of a candidate
@@ -244,12 +267,12 @@ VertexState CutClassifier::state(VertId v) const {
 }
 
 bool CutClassifier::snapped(VertId v) const {
-  const VertexInfo& info = info_[v.index()];
+  const VertexInfo& info = at(v);
   return info.on && (info.raw != 0 || info.pulled);
 }
 
-bool CutClassifier::vetoed(VertId v) const { return info_[v.index()].vetoed; }
-bool CutClassifier::veto_requested(VertId v) const { return info_[v.index()].requested_off; }
+bool CutClassifier::vetoed(VertId v) const { return at(v).vetoed; }
+bool CutClassifier::veto_requested(VertId v) const { return at(v).requested_off; }
 
 double CutClassifier::crossing_parameter(VertId a, VertId b) const {
   auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
@@ -276,7 +299,7 @@ TetConfig CutClassifier::configure(const Tet& tet) const {
   TetConfig config;
   for (int i = 0; i < 4; ++i) {
     config.vertex[i] = state(tet[i]);
-    config.bent |= is_on(config.vertex[i]) || info_[tet[i].index()].vetoed;
+    config.bent |= is_on(config.vertex[i]) || at(tet[i]).vetoed;
     int rank = 0;
     for (int j = 0; j < 4; ++j) rank += tet[j] < tet[i];
     config.rank[i] = static_cast<std::uint8_t>(rank);

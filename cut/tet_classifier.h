@@ -35,12 +35,14 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "absl/container/flat_hash_map.h"
 #include "cut/cut_polygon.h"
 #include "engine/tet_mesh.h"
+#include "engine/validation.h"
 
 namespace mtcut::cut {
 
@@ -90,10 +92,50 @@ struct ClassifierDef {
 };
 
 class CutClassifier {
+ private:
+  struct VertexInfo {
+    std::int8_t raw = 2;       // exact side, 2 = not computed (then `distance` is not either)
+    bool on = false;           // exactly on the plane, or snapped
+    bool active = false;
+    bool vetoed = false;       // kept off the cut
+    bool requested_off = false;  // by veto()
+    bool pulled = false;       // on the cut by request
+    std::int8_t kept_side = 0; // side of a vertex kept off the cut (0: its raw side)
+    double lean = 0;           // sum of its candidate neighbours' distances to the plane
+    double reach2 = 0;         // squared length of the longest candidate edge at the vertex
+    double distance = 0;       // signed distance to the plane (with `raw`)
+    bool dirty = false;        // listed in the scratch's `dirty` (to be reset)
+
+    bool operator==(const VertexInfo&) const = default;
+  };
+
  public:
+  // Per-vertex storage reused from one classifier to the next: a classifier
+  // costs what its cut touches, not the mesh's vertex count (a per-frame
+  // cut touches a few hundred of tens of thousands of vertices). It grows to
+  // the largest mesh seen; a classifier resets the entries it wrote when it
+  // is destroyed. One classifier at a time.
+  class Scratch {
+   public:
+    // Handed back clean: no classifier holds it, every entry is pristine.
+    engine::ValidationReport validate() const;
+
+   private:
+    friend class CutClassifier;
+    std::vector<VertexInfo> info;  // pristine (default) except while a classifier writes
+    std::vector<VertId> dirty;     // entries written by the live classifier
+    bool in_use = false;
+  };
+
   // `positions` (n_vertices): the geometry the cut is computed on; it must
   // outlive the classifier and not change while it is used.
-  CutClassifier(const CutPolygon& polygon, std::span<const engine::Vec3> positions, const ClassifierDef& def = {});
+  // `scratch`: reused storage (nullptr: the classifier allocates its own,
+  // a pass over the vertices).
+  CutClassifier(const CutPolygon& polygon, std::span<const engine::Vec3> positions, const ClassifierDef& def = {},
+                Scratch* scratch = nullptr);
+  ~CutClassifier();
+  CutClassifier(const CutClassifier&) = delete;
+  CutClassifier& operator=(const CutClassifier&) = delete;
 
   // Phase 0 (optional): `v` must not be snapped onto the cut: cut points near
   // it stay `snap` away from it instead, and if it lies exactly on the plane
@@ -116,7 +158,7 @@ class CutClassifier {
   // a search adds those tets as candidates, until none is returned.
   std::vector<VertId> take_new_on_vertices();
   // Phase 1: `v` is on the cut so far (finalize() may still keep it off).
-  bool on_so_far(VertId v) const { return info_[v.index()].on; }
+  bool on_so_far(VertId v) const { return at(v).on; }
   // Phase 2: fixes the state of every vertex.
   void finalize();
 
@@ -158,26 +200,28 @@ class CutClassifier {
   double face_clamp() const { return face_clamp_; }
 
  private:
-  struct VertexInfo {
-    std::int8_t raw = 2;       // exact side, 2 = not computed (then `distance` is not either)
-    bool on = false;           // exactly on the plane, or snapped
-    bool active = false;
-    bool vetoed = false;       // kept off the cut
-    bool requested_off = false;  // by veto()
-    bool pulled = false;       // on the cut by request
-    std::int8_t kept_side = 0; // side of a vertex kept off the cut (0: its raw side)
-    double lean = 0;           // sum of its candidate neighbours' distances to the plane
-    double reach2 = 0;         // squared length of the longest candidate edge at the vertex
-    double distance = 0;       // signed distance to the plane (with `raw`)
-  };
   struct EdgeInfo {
     double t = 0;              // from the lower id
     std::int8_t covered = -1;  // -1 not computed yet
   };
   static std::uint64_t edge_key(VertId a, VertId b);
-  std::int8_t raw_side(VertId v) const;
+  std::int8_t raw_side(VertId v) const {
+    const std::int8_t raw = at(v).raw;
+    return raw != 2 ? raw : compute_side(v);
+  }
+  std::int8_t compute_side(VertId v) const;  // raw_side's first time: caches side and distance
   double distance(VertId v) const;  // signed distance to the plane (cached with raw_side)
-  double reach(VertId v) const { return std::sqrt(info_[v.index()].reach2); }
+  double reach(VertId v) const { return std::sqrt(at(v).reach2); }
+  const VertexInfo& at(VertId v) const { return scratch_->info[v.index()]; }
+  // v's entry, to write (listed for the reset on first write).
+  VertexInfo& edit(VertId v) const {
+    VertexInfo& info = scratch_->info[v.index()];
+    if (!info.dirty) {
+      info.dirty = true;
+      scratch_->dirty.push_back(v);
+    }
+    return info;
+  }
   std::int8_t side_for_crossings(VertId v) const;
   // side_for_crossings of each vertex; all strictly on one side.
   std::array<std::int8_t, 4> crossing_sides(const Tet& tet) const;
@@ -199,7 +243,8 @@ class CutClassifier {
   double snap_;
   double face_clamp_;
   bool finalized_ = false;
-  mutable std::vector<VertexInfo> info_;  // (n_vertices)
+  std::unique_ptr<Scratch> own_scratch_;  // when none was given
+  Scratch* scratch_;                      // info: (>= n_vertices) entries
   mutable absl::flat_hash_map<std::uint64_t, EdgeInfo> edges_;  // straddling edges met so far
   std::vector<VertId> touched_;            // vertices of candidates
   std::vector<VertId> new_on_;             // put on since take_new_on_vertices()

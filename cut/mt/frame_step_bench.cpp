@@ -35,6 +35,7 @@ FrameStepResult run_frame_steps(const engine::Mt& mt, const FrameStepDef& def, e
   engine::Aabb box;
   for (const Vec3& p : mt.positions()) box.extend(p);
   SplitTable lut(SplitScheme::kLut);
+  MtCutWorkspace workspace;  // as the time-critical cutter reuses its own
   const auto steps = static_cast<std::size_t>(def.steps);
   std::vector<std::size_t> split(steps), made(steps);
   std::vector<std::vector<double>> runs(steps);
@@ -42,7 +43,7 @@ FrameStepResult run_frame_steps(const engine::Mt& mt, const FrameStepDef& def, e
     engine::Mt copy = mt;
     engine::TetBvh bvh(copy);
     for (std::size_t step = 0; step < steps; ++step) {
-      const MtChangeReport r = cut_mt(copy, bvh, frame_quad(box, def, static_cast<int>(step)), {}, {}, &lut);
+      const MtChangeReport r = cut_mt(copy, bvh, frame_quad(box, def, static_cast<int>(step)), {}, {}, &lut, &workspace);
       if (run == 0) {
         split[step] = r.counts.split_tets + r.counts.relabeled_tets;
         made[step] = r.counts.new_tets;

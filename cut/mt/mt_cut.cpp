@@ -57,29 +57,32 @@ bool key_less(const PointKey& a, const PointKey& b) {
 
 }  // namespace
 
-MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::vector<Vec3> geometry,
-             const MtCutDef& def, SplitTable& table)
+MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::span<const Vec3> geometry,
+             const MtCutDef& def, SplitTable& table, MtCutWorkspace* workspace)
     : polygon_(polygon),
-      deformed_(!geometry.empty()),
-      geometry_(geometry.empty() ? std::vector<Vec3>(mt.positions().begin(), mt.positions().end())
-                                 : std::move(geometry)),
       def_(def),
-      classifier_(polygon_, geometry_, ClassifierDef{def.snap}) {
+      own_workspace_(workspace ? nullptr : std::make_unique<MtCutWorkspace>()),
+      workspace_(workspace ? workspace : own_workspace_.get()) {
   const auto start = Clock::now();
-  if (geometry_.size() != mt.num_vertices())
-    throw std::invalid_argument("MtCut: the geometry has " + std::to_string(geometry_.size()) + " positions for " +
+  const bool deformed = !geometry.empty();
+  if (!deformed) geometry = mt.positions();
+  if (geometry.size() != mt.num_vertices())
+    throw std::invalid_argument("MtCut: the geometry has " + std::to_string(geometry.size()) + " positions for " +
                                 std::to_string(mt.num_vertices()) + " MT vertices");
+  // The search's state lives while the cut is searched (the jobs only
+  // append what it resolved).
+  CutClassifier classifier(polygon_, geometry, ClassifierDef{def.snap}, &workspace_->classifier);
   // The query box in rest space: the polygon's box, grown by the snap reach
   // (no edge is longer than the model's box) and by the largest displacement.
   // On rest geometry the BVH's root box is the model's: no pass over the
   // vertices (a per-frame cut touches a few dozen of thousands).
   engine::Aabb model = bvh.bounds();
   double displacement = 0;
-  if (deformed_) {
+  if (deformed) {
     model = engine::Aabb{};
-    for (std::size_t v = 0; v < geometry_.size(); ++v) {
-      model.extend(geometry_[v]);
-      displacement = std::max(displacement, (geometry_[v] - mt.positions()[v]).lpNorm<Eigen::Infinity>());
+    for (std::size_t v = 0; v < geometry.size(); ++v) {
+      model.extend(geometry[v]);
+      displacement = std::max(displacement, (geometry[v] - mt.positions()[v]).lpNorm<Eigen::Infinity>());
     }
   }
   const double margin = std::max(def.snap, ClassifierDef::kMinSnap) * (model.hi - model.lo).norm() + displacement;
@@ -91,13 +94,13 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
   // (a cut through the whole object finds every tet).
   std::vector<TetId> found;
   bvh.for_each_overlapping(mt, box, [&](TetId t) {
-    if (classifier_.may_be_cut(mt.tet(t))) found.push_back(t);
+    if (classifier.may_be_cut(mt.tet(t))) found.push_back(t);
     return true;
   });
   std::sort(found.begin(), found.end());  // BVH order must not leak into the result
-  for (TetId t : found) classifier_.add_candidate(mt.tet(t));
-  add_tets_around_on_vertices(mt, bvh, found);
-  classifier_.finalize();
+  for (TetId t : found) classifier.add_candidate(mt.tet(t));
+  add_tets_around_on_vertices(mt, bvh, classifier, found);
+  classifier.finalize();
 
   if (table.scheme() != def_.scheme) throw std::invalid_argument("MtCut: the split table is for another scheme");
   // Which tets change, and their pieces over vertex ids (new points are
@@ -108,19 +111,27 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
   std::vector<std::uint8_t> positive(found.size(), 0);  // not split, on the positive side
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Tet& tet = mt.tet(found[i]);
-    configs[i] = classifier_.configure(tet);
+    configs[i] = classifier.configure(tet);
     split[i] = configs[i].is_cut();
-    positive[i] = !split[i] && side_of_uncut(tet, classifier_) == VertexState::kPos;
+    positive[i] = !split[i] && side_of_uncut(tet, classifier) == VertexState::kPos;
   }
   // A vertex the cut passes through is split only when it separates
   // something: a tet around it is split or on the positive side (which keeps
   // its id). Else every tet around it would move onto its copy and leave it
   // unused, as when a polygon lies in the object's surface.
-  separating_.assign(mt.num_vertices(), 0);
+  std::vector<std::uint8_t>& separating = workspace_->separating;
+  if (separating.size() < mt.num_vertices()) separating.resize(mt.num_vertices(), 0);
+  struct Clear {  // hands `separating` back clean, whatever happens (only on-vertices are set)
+    std::vector<std::uint8_t>& separating;
+    const CutClassifier& classifier;
+    ~Clear() {
+      for (VertId v : classifier.on_vertices()) separating[v.index()] = 0;
+    }
+  } clear{separating, classifier};
   for (std::size_t i = 0; i < found.size(); ++i)
     if (split[i] || positive[i])
       for (VertId v : mt.tet(found[i]))
-        if (classifier_.state(v) == VertexState::kOnActive) separating_[v.index()] = 1;
+        if (classifier.state(v) == VertexState::kOnActive) separating[v.index()] = 1;
   pending_of_.reserve(found.size());
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Tet& tet = mt.tet(found[i]);
@@ -133,9 +144,9 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
       if (!on_split_vertex || positive[i]) continue;
     }
     if (p.split)
-      resolve_split(p, tet, configs[i], table);
+      resolve_split(p, tet, configs[i], classifier, table);
     else
-      resolve_relabel(p, tet);
+      resolve_relabel(p, tet, classifier);
     pending_of_.emplace(p.tet.value, static_cast<std::int32_t>(pending_.size()));
     pending_.push_back(p);
   }
@@ -160,7 +171,8 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::ve
   find_seconds_ = seconds_since(start);
 }
 
-void MtCut::add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, std::vector<TetId>& found) {
+void MtCut::add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, CutClassifier& classifier,
+                                        std::vector<TetId>& found) {
   // The cut may pass through a vertex that lies off the polygon's box (up to
   // the classifier's margin), and a tet around it must be classified with
   // the others: its other vertices may lie on the plane too, or make it
@@ -169,14 +181,14 @@ void MtCut::add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, std::ve
   // plane puts hundreds on it) and adds the tets around them, which may put
   // more on. `found` stays sorted.
   std::vector<TetId> around, extra, merged;
-  for (std::vector<VertId> on = classifier_.take_new_on_vertices(); !on.empty();
-       on = classifier_.take_new_on_vertices()) {
+  for (std::vector<VertId> on = classifier.take_new_on_vertices(); !on.empty();
+       on = classifier.take_new_on_vertices()) {
     engine::Aabb at;
     for (VertId v : on) at.extend(mt.position(v));
     around.clear();
     bvh.for_each_overlapping(mt, at, [&](TetId t) {
       const Tet& tet = mt.tet(t);
-      if (std::any_of(tet.begin(), tet.end(), [&](VertId v) { return classifier_.on_so_far(v); }))
+      if (std::any_of(tet.begin(), tet.end(), [&](VertId v) { return classifier.on_so_far(v); }))
         around.push_back(t);
       return true;
     });
@@ -185,7 +197,7 @@ void MtCut::add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, std::ve
     extra.clear();
     std::set_difference(around.begin(), around.end(), found.begin(), found.end(), std::back_inserter(extra));
     if (extra.empty()) break;
-    for (TetId t : extra) classifier_.add_candidate(mt.tet(t));
+    for (TetId t : extra) classifier.add_candidate(mt.tet(t));
     merged.clear();
     std::merge(found.begin(), found.end(), extra.begin(), extra.end(), std::back_inserter(merged));
     found.swap(merged);
@@ -239,7 +251,8 @@ void MtCut::number_points_by_key() {
   point_index_.clear();  // holds the scan's numbering; not needed any more
 }
 
-void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config, SplitTable& table) {
+void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config, const CutClassifier& classifier,
+                          SplitTable& table) {
   const SplitRecipe& recipe = table.recipe(config);
   p.recipe = &recipe;
   p.first = static_cast<std::uint32_t>(piece_tets_.size());
@@ -256,7 +269,7 @@ void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config, S
         if (label_kind(l) == LabelKind::kVertex && label_side(l) != LabelSide::kNeg)
           id_of[l] = tet[label_index(l)].value;  // the vertex itself
         else
-          id_of[l] = point_id(point_key(tet, l), [&] { return point_source(tet, l, classifier_, recipe); }).value;
+          id_of[l] = point_id(point_key(tet, l), [&] { return point_source(tet, l, classifier, recipe); }).value;
       }
       piece[c] = VertId(id_of[l]);
     }
@@ -265,16 +278,16 @@ void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config, S
   new_tets_ += recipe.tets.size();
 }
 
-void MtCut::resolve_relabel(Pending& p, const Tet& tet) {
+void MtCut::resolve_relabel(Pending& p, const Tet& tet, const CutClassifier& classifier) {
   // Onto the negative copies of the vertices the cut passes through; a face
   // lying in the cut (all its vertices on it) becomes surface.
   Tet moved = tet;
   for (VertId& v : moved)
     if (splits(v))
-      v = point_id(copy_key(v), [&] { return copy_source(v, geometry_); });
+      v = point_id(copy_key(v), [&] { return copy_source(v, classifier.positions()); });
   for (int f = 0; f < 4; ++f) {
     const auto& fv = kTetFaces[f];
-    if (std::all_of(fv.begin(), fv.end(), [&](int c) { return is_on(classifier_.state(tet[c])); }))
+    if (std::all_of(fv.begin(), fv.end(), [&](int c) { return is_on(classifier.state(tet[c])); }))
       p.on_faces = static_cast<std::uint8_t>(p.on_faces | 1u << f);
   }
   p.first = static_cast<std::uint32_t>(piece_tets_.size());
@@ -344,7 +357,7 @@ void MtCut::process(Mt& mt, TetBvh& bvh, std::size_t job, MtChangeReport& report
 
   // Step 3: UpdateProcessFragment.
   if (f != mt.root() && f != mt.drain()) {
-    Decomposition d = decompose_fragment(mt, f, scratch_);
+    Decomposition d = decompose_fragment(mt, f, workspace_->decomposition);
     if (d.outcome == DecomposeOutcome::kSplit) {
       ++report.counts.split_fragments;
       report.counts.new_fragments += d.parts.size() - 1;
@@ -379,12 +392,12 @@ engine::ValidationReport MtCut::validate(const Mt& mt) const {
   return report;
 }
 
-MtChangeReport cut_mt(Mt& mt, TetBvh& bvh, const CutPolygon& polygon, std::vector<Vec3> geometry,
-                      const CutMtOptions& options, SplitTable* table) {
+MtChangeReport cut_mt(Mt& mt, TetBvh& bvh, const CutPolygon& polygon, std::span<const Vec3> geometry,
+                      const CutMtOptions& options, SplitTable* table, MtCutWorkspace* workspace) {
   SplitTable local(options.def.scheme);
   SplitTable& recipes = table ? *table : local;
   bvh.refresh(mt);  // before the search; the cut's own edits never rebuild it
-  MtCut cut(mt, bvh, polygon, std::move(geometry), options.def, recipes);
+  MtCut cut(mt, bvh, polygon, geometry, options.def, recipes, workspace);
   std::vector<std::size_t> order(cut.jobs().size());
   std::iota(order.begin(), order.end(), 0);
   if (options.order == JobOrder::kDescending) std::reverse(order.begin(), order.end());

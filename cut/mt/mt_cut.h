@@ -42,6 +42,7 @@
 // recipe_faces.h), so the cost of a job is what the MT and the BVH edits cost.
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -49,6 +50,7 @@
 #include "cut/cut_polygon.h"
 #include "cut/mt/fragment_decomposition.h"
 #include "cut/mt/mt_change_report.h"
+#include "cut/mt/mt_cut_workspace.h"
 #include "cut/split_table.h"
 #include "cut/tet_classifier.h"
 #include "cut/tet_splitter.h"
@@ -65,16 +67,17 @@ struct MtCutDef {
   double snap = 0.0;  // classifier snap, fraction of an edge (see "Snapping" above)
 };
 
-// One cut in progress. Not copyable or movable: the classifier refers to the
-// polygon and geometry it owns.
+// One cut in progress. Not copyable or movable (it may own its workspace).
 class MtCut {
  public:
   // Step 1: every live MT tet the polygon cuts (or that holds a vertex the
   // cut passes through, on its negative side), found through `bvh` (in step
   // with `mt`), and its split (from `table`, of def.scheme). `geometry`:
   // (mt.num_vertices()) positions the cut is computed on; empty = rest.
-  MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::vector<Vec3> geometry,
-        const MtCutDef& def, SplitTable& table);
+  // `workspace`: storage reused from earlier cuts, held until the cut is
+  // destroyed (nullptr: the cut allocates its own, a pass over the vertices).
+  MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::span<const Vec3> geometry,
+        const MtCutDef& def, SplitTable& table, MtCutWorkspace* workspace = nullptr);
   MtCut(const MtCut&) = delete;
   MtCut& operator=(const MtCut&) = delete;
 
@@ -116,19 +119,20 @@ class MtCut {
   };
   // Step 1, after the polygon's box: the tets around every vertex the
   // candidates put on the cut, as candidates too, round after round.
-  void add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, std::vector<TetId>& found);
-  // The cut passes through v and splits it (it separates some tets from others).
-  bool splits(VertId v) const {
-    return v.index() < separating_.size() && separating_[v.index()] != 0;
-  }
+  static void add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, CutClassifier& classifier,
+                                          std::vector<TetId>& found);
+  // The cut passes through v and splits it (it separates some tets from
+  // others); while the cut is searched.
+  bool splits(VertId v) const { return workspace_->separating[v.index()] != 0; }
   void change_tet(Mt& mt, TetBvh& bvh, Pending& p, MtChangeReport& report);
   void add_vertices(Mt& mt, MtChangeReport& report);
   // The vertex of `key`, numbered (and its source recorded by `source()`)
   // when the cut first meets it; number_points_by_key() renumbers.
   template <class Source>
   VertId point_id(const PointKey& key, Source&& source);
-  void resolve_split(Pending& p, const Tet& tet, const TetConfig& config, SplitTable& table);
-  void resolve_relabel(Pending& p, const Tet& tet);
+  void resolve_split(Pending& p, const Tet& tet, const TetConfig& config, const CutClassifier& classifier,
+                     SplitTable& table);
+  void resolve_relabel(Pending& p, const Tet& tet, const CutClassifier& classifier);
   // Renumbers the new points in key order (in points_ and piece_tets_).
   void number_points_by_key();
   std::size_t job_of(FragId f) const;
@@ -137,15 +141,13 @@ class MtCut {
   }
 
   CutPolygon polygon_;
-  bool deformed_ = false;       // a geometry was given (else the rest positions)
-  std::vector<Vec3> geometry_;  // (n_vertices at start) positions the cut is computed on
   MtCutDef def_;
-  CutClassifier classifier_;
+  std::unique_ptr<MtCutWorkspace> own_workspace_;  // when none was given
+  MtCutWorkspace* workspace_;
   std::size_t first_vertex_ = 0;  // id of the first new vertex (the MT's vertex count at start)
   std::vector<NewPoint> points_;  // new points, in id (key) order
   absl::flat_hash_map<PointKey, std::int32_t, PointKeyHash> point_index_;  // key -> index in points_
   bool vertices_added_ = false;
-  std::vector<std::uint8_t> separating_;  // (n_vertices at start) 1: the cut splits the vertex
   std::vector<Pending> pending_;    // tets to change, in the search's order
   std::vector<Tet> piece_tets_;     // the pieces of every pending tet, final vertex ids
   std::size_t new_tets_ = 0;        // pieces of split tets
@@ -156,7 +158,6 @@ class MtCut {
   std::vector<std::uint8_t> job_done_;
   std::size_t jobs_done_ = 0;
   double find_seconds_ = 0;
-  DecompositionScratch scratch_;
   std::vector<TetId> pieces_;                // scratch of change_tet
   std::vector<std::int32_t> from_parents_;   // scratch of process
 };
@@ -170,9 +171,11 @@ struct CutMtOptions {
   std::uint64_t seed = 1;  // for kShuffled
 };
 
-// The whole cut at once: step 1, then every job. `geometry` as for MtCut.
-// `table` (of def.scheme) may be shared between cuts; nullptr uses a fresh one.
-MtChangeReport cut_mt(engine::Mt& mt, TetBvh& bvh, const CutPolygon& polygon, std::vector<Vec3> geometry = {},
-                      const CutMtOptions& options = {}, SplitTable* table = nullptr);
+// The whole cut at once: step 1, then every job. `geometry` and
+// `workspace` as for MtCut. `table` (of def.scheme) may be shared between
+// cuts; nullptr uses a fresh one.
+MtChangeReport cut_mt(engine::Mt& mt, TetBvh& bvh, const CutPolygon& polygon, std::span<const Vec3> geometry = {},
+                      const CutMtOptions& options = {}, SplitTable* table = nullptr,
+                      MtCutWorkspace* workspace = nullptr);
 
 }  // namespace mtcut::cut

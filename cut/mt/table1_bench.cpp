@@ -31,6 +31,7 @@ Table1Result run_table1(const engine::Mt& mt, const Table1Def& def) {
   result.mt_tets = mt.num_live_tets();
   result.mt_fragments = mt.num_fragments();
   SplitTable lut(SplitScheme::kLut), b17(SplitScheme::kBielser17);
+  MtCutWorkspace workspace;
   for (double half : def.half_sizes) {
     const CutPolygon polygon = table1_polygon(mt, half);
     Table1Row row;
@@ -46,7 +47,7 @@ Table1Result run_table1(const engine::Mt& mt, const Table1Def& def) {
     for (int run = 0; run <= def.runs; ++run) {  // run 0 warms up
       engine::Mt copy = mt;
       engine::TetBvh bvh(copy);
-      const MtChangeReport r = cut_mt(copy, bvh, polygon, {}, {}, &lut);
+      const MtChangeReport r = cut_mt(copy, bvh, polygon, {}, {}, &lut, &workspace);
       if (run == 0) {
         row.split_fragments = r.counts.split_fragments;
         row.split_tets = r.counts.split_tets + r.counts.relabeled_tets;

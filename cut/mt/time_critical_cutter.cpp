@@ -40,7 +40,7 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   queue_.pop_front();
   bvh.refresh(mt);  // between two cuts: the index edits of the last one never rebuild mid-cut
   Active a;
-  a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, std::move(q.geometry), def_.cut, table_);
+  a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def_.cut, table_, &workspace_);
   const auto jobs = a.cut->jobs();
   for (std::size_t j = 0; j < jobs.size(); ++j)
     if (frontier.is_visible(jobs[j])) a.order.push_back(j);

@@ -106,6 +106,7 @@ class TimeCriticalCutter {
 
   TimeCriticalCutterDef def_;
   SplitTable table_;
+  MtCutWorkspace workspace_;  // reused by each cut in turn
   std::deque<Queued> queue_;
   std::optional<Active> active_;
   CutterProgress totals_;

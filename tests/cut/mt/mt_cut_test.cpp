@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "cut/mt/mt_cut_workspace.h"
 #include "cut/mt/mt_pieces.h"
 #include "cut/stroke_sweep.h"
 #include "tests/cut/mt/mt_cut_test_util.h"
@@ -107,6 +108,40 @@ TEST(MtCut, OrderOfFragmentsDoesNotMatter) {
       results.push_back(canonical_mt(mt));
     }
     for (std::size_t k = 1; k < results.size(); ++k) EXPECT_TRUE(results[k] == results[0]) << name << " order " << k;
+  }
+}
+
+TEST(MtCut, ReusedWorkspaceGivesTheSameMtAsFreshOnes) {
+  // One workspace through a sequence of cuts (partial, complete, and one on
+  // deformed geometry) against a fresh one per cut; the workspace is handed
+  // back clean after each, with the MT growing under it.
+  for (const std::string name : {"ellipsoid", "liver"}) {
+    std::mt19937_64 rng(31);
+    Mt reused = cut_test_mt(name), fresh = cut_test_mt(name);
+    engine::TetBvh reused_bvh(reused), fresh_bvh(fresh);
+    const engine::Aabb box = mt_box(reused);
+    cut::MtCutWorkspace workspace;
+    cut::SplitTable table;
+    for (int i = 0; i < 8; ++i) {
+      const CutPolygon polygon = random_polygon(box, rng, i % 4 == 3);
+      std::vector<Vec3> geometry;
+      if (i == 5) {  // a small shear: deformed positions, the polygon in the same place
+        for (const Vec3& p : reused.positions()) geometry.push_back(p + Vec3(0.01 * p.z(), 0, 0));
+      }
+      const MtChangeReport a = cut_mt(reused, reused_bvh, polygon, geometry, {}, &table, &workspace);
+      const MtChangeReport b = cut_mt(fresh, fresh_bvh, polygon, geometry, {}, &table);
+      const std::string where = name + " cut " + std::to_string(i);
+      const auto clean = workspace.validate();
+      ASSERT_TRUE(clean.ok()) << where << ": " << clean.summary();
+      ASSERT_TRUE(reused.validate().ok()) << where << ": " << reused.validate().summary();
+      EXPECT_EQ(a.counts.split_tets, b.counts.split_tets) << where;
+      EXPECT_EQ(a.counts.new_vertices, b.counts.new_vertices) << where;
+      ASSERT_TRUE(canonical_mt(reused) == canonical_mt(fresh)) << where;
+      ASSERT_EQ(std::vector<Vec3>(reused.positions().begin(), reused.positions().end()),
+                std::vector<Vec3>(fresh.positions().begin(), fresh.positions().end()))
+          << where;
+    }
+    EXPECT_GT(reused.num_live_tets(), cut_test_mt(name).num_live_tets()) << name;
   }
 }
 

@@ -1,0 +1,17 @@
+#include "cut/mt/mt_cut_workspace.h"
+
+#include <string>
+
+namespace mtcut::cut {
+
+engine::ValidationReport MtCutWorkspace::validate() const {
+  engine::ValidationReport report = classifier.validate();
+  for (std::size_t v = 0; v < separating.size(); ++v)
+    if (separating[v] != 0) report.add("MtCutWorkspace: vertex " + std::to_string(v) + " left marked separating");
+  for (std::size_t v = 0; v < decomposition.vertex_owner.size(); ++v)
+    if (decomposition.vertex_owner[v] != -1)
+      report.add("MtCutWorkspace: vertex " + std::to_string(v) + " left owned by the decomposition");
+  return report;
+}
+
+}  // namespace mtcut::cut
