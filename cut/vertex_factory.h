@@ -33,11 +33,28 @@ struct PointKey {
   std::int8_t side = 0;                       // -1 / +1 for per-side points, 0 for single ones
   std::array<std::int32_t, 4> ids{-1, -1, -1, -1};  // sorted global ids of the vertex / edge / face / tet
 
-  bool operator==(const PointKey&) const = default;
+  // Field by field (the defaulted == compares the ids through memcmp, a
+  // call per probe of the cut's point map).
+  bool operator==(const PointKey& o) const {
+    return kind == o.kind && side == o.side && ids[0] == o.ids[0] && ids[1] == o.ids[1] && ids[2] == o.ids[2] &&
+           ids[3] == o.ids[3];
+  }
 };
 
 struct PointKeyHash {
-  std::size_t operator()(const PointKey& k) const noexcept;
+  // Two multiplies over the ids packed in two words, then a mix (the hash
+  // map takes its probe position and tag from different bits).
+  std::size_t operator()(const PointKey& k) const noexcept {
+    const auto word = [&](int i, int j) {
+      return static_cast<std::uint64_t>(static_cast<std::uint32_t>(k.ids[i])) << 32 |
+             static_cast<std::uint32_t>(k.ids[j]);
+    };
+    const std::uint64_t tag = static_cast<std::uint64_t>(k.kind) << 8 | static_cast<std::uint8_t>(k.side);
+    std::uint64_t h = word(0, 1) * 0x9E3779B97F4A7C15ull ^ (word(2, 3) + tag) * 0xC2B2AE3D27D4EB4Full;
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9ull;
+    return static_cast<std::size_t>(h ^ h >> 32);
+  }
 };
 
 // Where a new point is: position = sum weights[i] * position(parents[i]).
