@@ -51,7 +51,8 @@ PointSource copy_source(VertId v, std::span<const Vec3> geometry) {
   return source;
 }
 
-bool key_less(const PointKey& a, const PointKey& b) {
+// The order of new vertex ids (number_points_by_key sorts packed keys in it).
+[[maybe_unused]] bool key_less(const PointKey& a, const PointKey& b) {
   return std::tie(a.kind, a.side, a.ids) < std::tie(b.kind, b.side, b.ids);
 }
 
@@ -230,18 +231,34 @@ VertId MtCut::point_id(const PointKey& key, Source&& source) {
 
 void MtCut::number_points_by_key() {
   // Ids follow the keys, not the scan: the scan's order is that of tet ids,
-  // which follow the order the jobs of the last cut ran in.
+  // which follow the order the jobs of the last cut ran in. The keys are
+  // sorted by value, packed into three words in key_less's order (an
+  // indirect sort reads a scattered point per comparison).
+  struct Packed {
+    std::uint64_t kind_side, ids01, ids23;  // ids + 1 (>= 0) in 32 bits each
+    std::int32_t index;
+    bool operator<(const Packed& o) const {
+      return std::tie(kind_side, ids01, ids23) < std::tie(o.kind_side, o.ids01, o.ids23);
+    }
+  };
+  const auto pack = [](const PointKey& k, std::size_t index) {
+    const auto id = [&](int i) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(k.ids[i] + 1)); };
+    return Packed{static_cast<std::uint64_t>(k.kind) << 8 | static_cast<std::uint64_t>(k.side + 1), id(0) << 32 | id(1),
+                  id(2) << 32 | id(3), static_cast<std::int32_t>(index)};
+  };
   const std::size_t n = points_.size();
-  std::vector<std::int32_t> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](std::int32_t a, std::int32_t b) { return key_less(points_[a].key, points_[b].key); });
+  std::vector<Packed> order;
+  order.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) order.push_back(pack(points_[i].key, i));
+  std::sort(order.begin(), order.end());
   std::vector<std::int32_t> rank(n);
   std::vector<NewPoint> sorted;
   sorted.reserve(n);
   for (std::size_t r = 0; r < n; ++r) {
-    rank[static_cast<std::size_t>(order[r])] = static_cast<std::int32_t>(r);
-    sorted.push_back(points_[static_cast<std::size_t>(order[r])]);
+    const auto i = static_cast<std::size_t>(order[r].index);
+    assert(r == 0 || key_less(points_[static_cast<std::size_t>(order[r - 1].index)].key, points_[i].key));
+    rank[i] = static_cast<std::int32_t>(r);
+    sorted.push_back(points_[i]);
   }
   points_ = std::move(sorted);
   const auto first = static_cast<std::int32_t>(first_vertex_);
