@@ -12,6 +12,7 @@
 // grows boxes on one root-to-leaf path) and the tree is rebuilt, by its
 // owner between cuts, once the edits outnumber half the tets.
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -25,6 +26,18 @@ class Frontier;
 
 // The box of tet t's corners.
 Aabb tet_box(const Mt& mt, TetId t);
+// tet_box(mt, t).overlaps(box), axis after axis: a query box thin along one
+// axis (a cut quad) rejects most tets on the first.
+inline bool tet_box_overlaps(const Mt& mt, TetId t, const Aabb& box) {
+  const Tet& v = mt.tet(t);
+  const Vec3 &a = mt.position(v[0]), &b = mt.position(v[1]), &c = mt.position(v[2]), &d = mt.position(v[3]);
+  for (int k = 0; k < 3; ++k) {
+    const double lo = std::min(std::min(a[k], b[k]), std::min(c[k], d[k]));
+    const double hi = std::max(std::max(a[k], b[k]), std::max(c[k], d[k]));
+    if (!(lo <= box.hi[k] && box.lo[k] <= hi)) return false;
+  }
+  return true;
+}
 // p lies in the closed tet t (exact orientation tests).
 bool tet_contains(const Mt& mt, TetId t, const Vec3& p);
 // The first of `tets` holding p (none if none). For small local searches:
@@ -53,7 +66,7 @@ class TetBvh {
     const auto nodes = bvh_.nodes();
     bvh_.walk([&](std::int32_t n) { return nodes[static_cast<std::size_t>(n)].box.overlaps(box); },
               [&](std::int32_t n) {
-                return visit_leaf(n, [&](TetId t) { return !tet_box(mt, t).overlaps(box) || visit(t); });
+                return visit_leaf(n, [&](TetId t) { return !tet_box_overlaps(mt, t, box) || visit(t); });
               });
   }
   // Every indexed tet holding p (closed tets, exact).
