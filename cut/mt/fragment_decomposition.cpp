@@ -33,6 +33,7 @@ Decomposition decompose_fragment(Mt& mt, FragId f, DecompositionScratch& s) {
   s.parent.resize(n);
   std::iota(s.parent.begin(), s.parent.end(), 0);
   s.touched.clear();
+  std::size_t components = n;  // less one per union
   for (std::size_t i = 0; i < n; ++i) {
     auto root = static_cast<std::int32_t>(i);
     for (engine::VertId v : mt.tet(tet_at(i))) {
@@ -46,9 +47,11 @@ Decomposition decompose_fragment(Mt& mt, FragId f, DecompositionScratch& s) {
       if (a == root) continue;
       s.parent[static_cast<std::size_t>(std::max(a, root))] = std::min(a, root);
       root = std::min(a, root);
+      --components;
     }
   }
   for (engine::VertId v : s.touched) s.vertex_owner[v.index()] = -1;
+  if (components == 1) return out;  // connected: the common case, no grouping pass
 
   // Groups numbered by their first tet (a created one); count both kinds.
   s.group.assign(n, -1);
