@@ -67,7 +67,8 @@ struct MtCutDef {
   double snap = 0.0;  // classifier snap, fraction of an edge (see "Snapping" above)
 };
 
-// One cut in progress. Not copyable or movable (it may own its workspace).
+// One cut in progress. Not copyable: it holds its workspace (its own, or one
+// lent by the caller for reuse) until it is destroyed.
 class MtCut {
  public:
   // Step 1: every live MT tet the polygon cuts (or that holds a vertex the

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
 
 #include "sim/forces.h"
 #include "sim/spring_system.h"
@@ -26,24 +27,17 @@ double dot(const std::vector<Vec3>& u, const std::vector<Vec3>& w) {
 // A random SPD spring system: the fixed test box with every spring's
 // stiffness and damping scaled by a random factor in [0.1, 10], jittered
 // and moving, assembled at dt = 1/60.
-struct RandomSystem {
-  SpringModel model;
-  SpringSystem system;
-  std::vector<Vec3> b;
-};
-
-RandomSystem random_system(unsigned seed) {
-  RandomSystem c;
-  c.model = test::fixed_test_box();
+test::JitteredSystem random_system(unsigned seed) {
+  SpringModel model = test::fixed_test_box();
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> log_scale(std::log(0.1), std::log(10.0));
-  for (std::size_t s = 0; s < c.model.num_springs(); ++s) {
+  for (std::size_t s = 0; s < model.num_springs(); ++s) {
     const double scale = std::exp(log_scale(rng));
-    c.model.stiffness[s] *= scale;
-    c.model.damping[s] *= scale;
+    model.stiffness[s] *= scale;
+    model.damping[s] *= scale;
   }
-  EXPECT_TRUE(c.model.validate().ok());
-  test::assemble_system(c.model, test::jittered_moving_state(c.model, rng), kDt, c.system, c.b);
+  EXPECT_TRUE(model.validate().ok());
+  test::JitteredSystem c = test::jittered_system(std::move(model), rng, kDt);
   EXPECT_TRUE(c.system.rows_sorted());
   return c;
 }
@@ -80,7 +74,7 @@ double residual2(SpringSystem& system, const std::vector<Vec3>& b, const std::ve
 // CG's solution, and the residual reported is the true one.
 TEST(SsorCg, GivesTheReferenceCgsSolution) {
   for (const unsigned seed : {1u, 2u, 3u}) {
-    RandomSystem c = random_system(seed);
+    test::JitteredSystem c = random_system(seed);
     const std::size_t n = c.b.size();
     const double tolerance2 = 1e-24 * dot(c.b, c.b);
     const std::vector<Vec3> expected = reference_cg(c.system, c.b, tolerance2);
@@ -108,7 +102,7 @@ TEST(SsorCg, GivesTheReferenceCgsSolution) {
 // Stopped by max_iterations before the tolerance: the reported residual is
 // x's, and falls with each iteration allowed.
 TEST(SsorCg, AppliesTheLastStepWhenTheIterationsRunOut) {
-  RandomSystem c = random_system(7);
+  test::JitteredSystem c = random_system(7);
   const std::size_t n = c.b.size();
   const double tolerance2 = 1e-24 * dot(c.b, c.b);
   double last = dot(c.b, c.b);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numeric>
 #include <random>
+#include <utility>
 
 #include "engine/mesh_loader.h"
 #include "engine/mt/frontier.h"
@@ -190,23 +191,13 @@ TEST(StepperBar, HangingBarSettlesAlikeAtTheCoarsestAndFinestFrontier) {
 
 // A jittered, moving state of a stiff box with its x = +0.05 face fixed, and
 // its implicit system at dt = 1/60.
-struct SystemCase {
-  SpringModel model;
-  SpringState state;
-  SpringSystem system;
-  std::vector<Vec3> b;
-};
-
-SystemCase system_case(bool shuffle_springs) {
-  SystemCase c;
-  c.model = test::fixed_test_box();
-  if (shuffle_springs) test::shuffle_springs(c.model, 5);  // a hand-built order: not grouped by first particle
-  EXPECT_TRUE(c.model.validate().ok());
-  EXPECT_GT(c.model.num_fixed(), 0u);
+test::JitteredSystem system_case(bool shuffle_springs) {
+  SpringModel model = test::fixed_test_box();
+  if (shuffle_springs) test::shuffle_springs(model, 5);  // a hand-built order: not grouped by first particle
+  EXPECT_TRUE(model.validate().ok());
+  EXPECT_GT(model.num_fixed(), 0u);
   std::mt19937 rng(3);
-  c.state = test::jittered_moving_state(c.model, rng);
-  test::assemble_system(c.model, c.state, kDt, c.system, c.b);
-  return c;
+  return test::jittered_system(std::move(model), rng, kDt);
 }
 
 double norm2(const std::vector<Vec3>& u) {
@@ -216,7 +207,7 @@ double norm2(const std::vector<Vec3>& u) {
 }
 
 TEST(SpringSystem, IsSymmetricPositiveDefiniteWithFixedRowsDecoupled) {
-  SystemCase c = system_case(false);
+  test::JitteredSystem c = system_case(false);
   const std::size_t n = c.model.num_particles();
   for (std::size_t i = 0; i < n; ++i) {
     const Sym3& d = c.system.diagonal()[i];
@@ -254,7 +245,7 @@ TEST(SpringSystem, PreconditionersConvergeToTheSameDv) {
   std::vector<int> iterations;
   for (const bool shuffle : {false, true}) {
     for (const auto kind : {PreconditionerKind::kSymmetricGaussSeidel, PreconditionerKind::kBlockJacobi}) {
-      SystemCase c = system_case(shuffle);
+      test::JitteredSystem c = system_case(shuffle);
       EXPECT_EQ(c.system.rows_sorted(), !shuffle);
       std::vector<Vec3> dv(c.model.num_particles(), Vec3::Zero()), adv(dv.size());
       const double tolerance2 = 1e-24 * norm2(c.b);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <numeric>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "engine/mesh_loader.h"
@@ -65,14 +66,25 @@ inline SpringState jittered_moving_state(const SpringModel& model, std::mt19937&
   return state;
 }
 
-// Assembles `system` and its right-hand side `b` for `model` at `state`
-// over one step of `dt`, with no force but the body forces (gravity off).
-inline void assemble_system(const SpringModel& model, const SpringState& state, double dt, SpringSystem& system,
-                            std::vector<Vec3>& b) {
+// A model at a jittered, moving state (jittered_moving_state) and its
+// implicit system A dv = b over one step of `dt`, with no force but the
+// body forces (gravity off).
+struct JitteredSystem {
+  SpringModel model;
+  SpringState state;
+  SpringSystem system;
+  std::vector<Vec3> b;
+};
+
+inline JitteredSystem jittered_system(SpringModel model, std::mt19937& rng, double dt) {
+  JitteredSystem c;
+  c.model = std::move(model);
+  c.state = jittered_moving_state(c.model, rng);
   std::vector<Vec3> f;
-  compute_body_forces(model, Environment{}, state, f);
-  b.resize(model.num_particles());
-  system.assemble(model, state, f, dt, b);
+  compute_body_forces(c.model, Environment{}, c.state, f);
+  c.b.resize(c.model.num_particles());
+  c.system.assemble(c.model, c.state, f, dt, c.b);
+  return c;
 }
 
 }  // namespace mtcut::sim::test
