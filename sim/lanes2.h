@@ -11,6 +11,17 @@
 
 namespace mtcut::sim {
 
+// On a hot spring loop: also compiled for AVX2, chosen at load time when the
+// CPU has it (an ifunc; x86-64 Linux). Not FMA: the AVX2 copy does the same
+// two-lane operations in the same order, only VEX-encoded (three operands,
+// fewer register copies), so its results are bit for bit the SSE2 ones.
+// bench sim's implicit frame: about 5% less time.
+#if defined(__x86_64__) && defined(__linux__) && defined(__GNUC__)
+#define MTCUT_SPRING_LOOP __attribute__((target_clones("avx2", "default")))
+#else
+#define MTCUT_SPRING_LOOP
+#endif
+
 // Two lanes of doubles (GCC/Clang vector extension: SSE2 on x86-64).
 using Lanes2 = double __attribute__((vector_size(16)));
 

@@ -24,12 +24,13 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "sim/lanes2.h"
 #include "sim/spring_system.h"
 
 namespace mtcut::sim {
 
-CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tolerance2, int max_iterations,
-                                         std::vector<Vec3>& x_vec) {
+MTCUT_SPRING_LOOP CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tolerance2,
+                                                           int max_iterations, std::vector<Vec3>& x_vec) {
   const std::size_t n = own_.size();
   const Sym3* diag = diag_.data();
   const Sym3* dinv = diag_inverse_.data();

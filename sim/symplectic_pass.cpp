@@ -41,8 +41,8 @@ void RunPairs::fill(const SpringModel& model) {
   start[n] = static_cast<std::int32_t>(springs.size());
 }
 
-void symplectic_substep(const SpringModel& model, const RunPairs& pairs, const Environment& env, bool contacts,
-                        double h, SpringState& state, std::vector<Vec3>& acc_vec) {
+MTCUT_SPRING_LOOP void symplectic_substep(const SpringModel& model, const RunPairs& pairs, const Environment& env,
+                                          bool contacts, double h, SpringState& state, std::vector<Vec3>& acc_vec) {
   const std::size_t n = model.num_particles();
   if (!model.tet_particles.empty()) add_volume_forces(model, state, acc_vec);  // read x before it moves
   const std::int32_t *start = pairs.start.data(), *other = pairs.other.data();

@@ -38,8 +38,8 @@ void SpringSystem::update_layout(const SpringModel& model) {
 // b = h (f0 + h K v0), K v0 = -sum_s J_s (v_a - v_b), J_s = k (n n^T + t (I - n n^T)).
 // Spring s adds g_s to b_a and -g_s to b_b: its force (Hooke + dashpot, as
 // compute_forces) times h, minus h^2 J_s (v_a - v_b).
-void SpringSystem::assemble(const SpringModel& model, const SpringState& state, const std::vector<Vec3>& f, double h,
-                            std::vector<Vec3>& b) {
+MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const SpringState& state,
+                                              const std::vector<Vec3>& f, double h, std::vector<Vec3>& b) {
   const std::size_t n = model.num_particles();
   update_layout(model);
   const double h2 = h * h;
