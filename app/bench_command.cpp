@@ -30,7 +30,9 @@ void register_bench_command(CLI::App& app) {
       "sim", "Spring step on a builtin box (~10k vertices, ~60k springs): symplectic Euler, implicit Euler at 1/60 s, "
              "and a plain SoA reference loop");
   sim->add_option("--tets", sim_def->tets, "target tet count of the box")->capture_default_str()->check(CLI::PositiveNumber);
-  sim->add_option("--runs", sim_def->runs, "timed batches (median reported)")->capture_default_str()->check(CLI::PositiveNumber);
+  sim->add_option("--runs", sim_def->runs, "timed runs, median reported (each implicit run replays the same 3 s from rest)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   sim->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
   sim->callback([sim_def, json] { print(run_sim_bench(*sim_def), *json); });
 

@@ -11,7 +11,7 @@ struct SimBenchDef {
   int tets = 50000;   // builtin box target (~10k vertices, ~60k springs)
   int runs = 5;       // timed batches (median reported)
   int steps = 200;    // explicit steps per batch
-  int frames = 30;    // implicit 1/60 s frames per batch
+  int frames = 180;   // implicit 1/60 s frames per run, from rest (3 s)
 };
 
 nlohmann::ordered_json run_sim_bench(const SimBenchDef& def);
