@@ -1,6 +1,7 @@
 #include "sim/state_transfer.h"
 
 #include <algorithm>
+#include <cassert>
 #include <limits>
 
 #include "engine/tet_geometry.h"
@@ -23,25 +24,47 @@ std::array<double, 4> barycentric(const std::array<Vec3, 4>& c, const Vec3& p) {
 
 enum class Source { kKept, kInterpolated, kCut, kExtrapolated };
 
-std::pair<Vec3, Vec3> sample(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snap,
-                             VertId v, const OriginLookup& origins, Source& source, int depth) {
+// A vertex's position, velocity and carried vectors under the snapshot.
+struct Sample {
+  Vec3 x = Vec3::Zero(), v = Vec3::Zero();
+  std::array<Vec3, DeformationSnapshot::kMaxCarried> carried{};
+
+  // = particle p's state in the snapshot.
+  void set_particle(const DeformationSnapshot& snap, std::size_t p) {
+    x = snap.x[p];
+    v = snap.v[p];
+    for (std::size_t c = 0; c < snap.carried.size(); ++c) carried[c] = snap.carried[c][p];
+  }
+  // += w (particle p's state in the snapshot).
+  void add_particle(const DeformationSnapshot& snap, std::size_t p, double w) {
+    x += w * snap.x[p];
+    v += w * snap.v[p];
+    for (std::size_t c = 0; c < snap.carried.size(); ++c) carried[c] += w * snap.carried[c][p];
+  }
+};
+
+Sample sample(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snap, VertId v,
+              const OriginLookup& origins, Source& source, int depth) {
+  Sample out;
+  out.carried.fill(Vec3::Zero());
   if (v.index() < snap.particle_of.size() && snap.particle_of[v.index()] >= 0) {
     source = Source::kKept;
-    const auto p = static_cast<std::size_t>(snap.particle_of[v.index()]);
-    return {snap.x[p], snap.v[p]};
+    out.set_particle(snap, static_cast<std::size_t>(snap.particle_of[v.index()]));
+    return out;
   }
   if (origins && depth < 64) {
     if (const auto origin = origins(v)) {
       Source ignored;
-      Vec3 x = Vec3::Zero(), vel = Vec3::Zero();
       for (int k = 0; k < 4; ++k) {
         if (!origin->parents[k].valid()) continue;
-        const auto [xp, vp] = sample(mt, bvh, snap, origin->parents[k], origins, ignored, depth + 1);
-        x += origin->weights[k] * xp;
-        vel += origin->weights[k] * vp;
+        const Sample parent = sample(mt, bvh, snap, origin->parents[k], origins, ignored, depth + 1);
+        const double w = origin->weights[k];
+        out.x += w * parent.x;
+        out.v += w * parent.v;
+        for (std::size_t c = 0; c < snap.carried.size(); ++c) out.carried[c] += w * parent.carried[c];
       }
       source = Source::kCut;
-      return {x, vel};
+      return out;
     }
   }
   const Vec3& rest = mt.position(v);
@@ -54,13 +77,9 @@ std::pair<Vec3, Vec3> sample(const engine::Mt& mt, const engine::TetBvh& bvh, co
   if (holder.valid()) {
     source = Source::kInterpolated;
     const auto w = barycentric(mt.corners(holder), rest);
-    Vec3 x = Vec3::Zero(), vel = Vec3::Zero();
-    for (int k = 0; k < 4; ++k) {
-      const auto p = static_cast<std::size_t>(snap.particle_of[mt.tet(holder)[k].index()]);
-      x += w[k] * snap.x[p];
-      vel += w[k] * snap.v[p];
-    }
-    return {x, vel};
+    for (int k = 0; k < 4; ++k)
+      out.add_particle(snap, static_cast<std::size_t>(snap.particle_of[mt.tet(holder)[k].index()]), w[k]);
+    return out;
   }
   // Outside the simulated mesh: follow the nearest simulated vertex rigidly.
   source = Source::kExtrapolated;
@@ -76,8 +95,13 @@ std::pair<Vec3, Vec3> sample(const engine::Mt& mt, const engine::TetBvh& bvh, co
       nearest_vertex = VertId(u);
     }
   }
-  if (!nearest_vertex.valid()) return {rest, Vec3::Zero()};
-  return {snap.x[nearest] + (rest - mt.position(nearest_vertex)), snap.v[nearest]};
+  if (!nearest_vertex.valid()) {
+    out.x = rest;
+    return out;
+  }
+  out.set_particle(snap, nearest);
+  out.x += rest - mt.position(nearest_vertex);
+  return out;
 }
 
 }  // namespace
@@ -106,21 +130,29 @@ DeformationSnapshot take_snapshot(const engine::Mt& mt, std::span<const engine::
 std::pair<Vec3, Vec3> sample_vertex(const engine::Mt& mt, const engine::TetBvh& bvh,
                                     const DeformationSnapshot& snapshot, VertId v, const OriginLookup& origins) {
   Source ignored;
-  return sample(mt, bvh, snapshot, v, origins, ignored, 0);
+  const Sample s = sample(mt, bvh, snapshot, v, origins, ignored, 0);
+  return {s.x, s.v};
 }
 
 SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
-                           const SpringModel& model, const OriginLookup& origins, TransferReport* report) {
+                           const SpringModel& model, const OriginLookup& origins, TransferReport* report,
+                           std::vector<std::vector<Vec3>>* carried) {
+  assert(snapshot.carried.size() <= DeformationSnapshot::kMaxCarried);
   TransferReport local;
   SpringState state;
   const std::size_t n = model.num_particles();
   state.x.resize(n);
   state.v.resize(n);
+  if (carried) carried->assign(snapshot.carried.size(), std::vector<Vec3>(n));
   Vec3 momentum = Vec3::Zero();
   double free_mass = 0;
   for (std::size_t p = 0; p < n; ++p) {
     Source source;
-    std::tie(state.x[p], state.v[p]) = sample(mt, bvh, snapshot, model.particle_vertex[p], origins, source, 0);
+    const Sample s = sample(mt, bvh, snapshot, model.particle_vertex[p], origins, source, 0);
+    state.x[p] = s.x;
+    state.v[p] = s.v;
+    if (carried)
+      for (std::size_t c = 0; c < carried->size(); ++c) (*carried)[c][p] = s.carried[c];
     switch (source) {
       case Source::kKept: ++local.kept; break;
       case Source::kInterpolated: ++local.interpolated; break;

@@ -48,6 +48,11 @@ struct DeformationSnapshot {
   std::vector<std::int32_t> particle_of;  // (n_mt_vertices) particle index, -1 if not simulated
   std::vector<Vec3> x, v;                 // (n_particles) state of the old model
   Vec3 momentum = Vec3::Zero();           // sum m v before the change
+  // At most kMaxCarried more per-particle vectors of the old model, carried
+  // to the new one as v is (same weights, no momentum correction): the
+  // implicit stepper's warm start. Filled by the caller; may be empty.
+  static constexpr std::size_t kMaxCarried = 3;
+  std::vector<std::vector<Vec3>> carried;
 
   bool simulated(engine::TetId t) const;
 };
@@ -77,9 +82,10 @@ struct TransferReport {
   Vec3 momentum_correction = Vec3::Zero();  // the uniform dv applied
 };
 
-// The state of `model` (the new one) from the snapshot.
+// The state of `model` (the new one) from the snapshot; `carried` (when
+// given) gets the snapshot's carried vectors for the new particles.
 SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
                            const SpringModel& model, const OriginLookup& origins = {},
-                           TransferReport* report = nullptr);
+                           TransferReport* report = nullptr, std::vector<std::vector<Vec3>>* carried = nullptr);
 
 }  // namespace mtcut::sim

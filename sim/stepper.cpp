@@ -26,6 +26,22 @@ void Stepper::restart_warm_start(std::size_t n) {
   extrapolation2_ = 0.0;
 }
 
+std::vector<std::vector<Vec3>> Stepper::warm_start_history() const {
+  if (dv_.empty()) return {};
+  return {dv_, dv_last_, dv_before_};
+}
+
+void Stepper::carry_warm_start(std::vector<std::vector<Vec3>> history) {
+  const std::size_t n = history.empty() ? 0 : history[0].size();
+  if (history.size() != 3 || history[1].size() != n || history[2].size() != n) {
+    restart_warm_start(0);
+    return;
+  }
+  dv_ = std::move(history[0]);
+  dv_last_ = std::move(history[1]);
+  dv_before_ = std::move(history[2]);
+}
+
 void Stepper::resize(const SpringModel& model) {
   const std::size_t n = model.num_particles();
   if (dv_.size() != n) restart_warm_start(n);  // a new model: no warm start

@@ -58,6 +58,13 @@ class Stepper {
   std::uint64_t refused_steps() const { return refused_steps_; }
   // Forgets the warm start (call when particles are renumbered).
   void reset_warm_start() { restart_warm_start(0); }
+  // The implicit warm start's history, per particle (dv of the last three
+  // steps, latest first; empty before the first implicit step), to carry
+  // across a change of the model (state_transfer.h) ...
+  std::vector<std::vector<Vec3>> warm_start_history() const;
+  // ... and to take back, for the new model's particles (the extrapolation
+  // factors are kept). A history of the wrong size is a restart.
+  void carry_warm_start(std::vector<std::vector<Vec3>> history);
 
  private:
   // dv's history (n entries, zero) and the extrapolation factors back to

@@ -98,7 +98,7 @@ class World {
  private:
   engine::ErrorField error_field(const Vec3& focus) const;
   // Rebuilds springs on the current frontier and carries the state from `snapshot`.
-  void rebuild_model_from(const struct DeformationSnapshot& snapshot, const struct OriginIndex* origins = nullptr);
+  void rebuild_model_from(struct DeformationSnapshot snapshot, const struct OriginIndex* origins = nullptr);
   // Stage 2: queue the blade's sweep over the poses, run the cutter, follow its changes.
   void run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m);
   Environment environment_for(const ScalpelPose& pose) const;

@@ -80,7 +80,11 @@ TEST_P(TransferOnMeshes, RandomLodStepsConserveMassAndMomentumAndCarryAffineFiel
   const double density_volume = material.density * fine.total_volume();
   int interpolated = 0;
   for (int step = 0; step < 60; ++step) {
-    const DeformationSnapshot snap = take_snapshot(mt, frontier, model, state);
+    DeformationSnapshot snap = take_snapshot(mt, frontier, model, state);
+    // Carried along: the velocities themselves and the positions (as fields
+    // with no offset): they must come out as v before its momentum
+    // correction, bit for bit, and as the affine x.
+    snap.carried = {snap.v, snap.x};
     // A random batch of refine / coarsen operations.
     for (int k = 0; k < 8; ++k) {
       const bool coarsen = rng() % 3 != 0;
@@ -93,8 +97,18 @@ TEST_P(TransferOnMeshes, RandomLodStepsConserveMassAndMomentumAndCarryAffineFiel
     model = model_of(mt, frontier, material, fixed);
     ASSERT_TRUE(model.validate().ok()) << model.validate().summary();
     TransferReport report;
-    state = transfer_state(mt, bvh, snap, model, {}, &report);
+    std::vector<std::vector<Vec3>> carried;
+    state = transfer_state(mt, bvh, snap, model, {}, &report, &carried);
     interpolated += static_cast<int>(report.interpolated);
+    ASSERT_EQ(carried.size(), 2u);
+    for (const auto& field_values : carried) ASSERT_EQ(field_values.size(), model.num_particles());
+    for (std::size_t p = 0; p < model.num_particles(); ++p) {
+      if (model.inv_mass[p] != 0) {
+        const Vec3 corrected = carried[0][p] + report.momentum_correction;
+        ASSERT_EQ(corrected, state.v[p]) << "step " << step << " particle " << p;
+      }
+      ASSERT_LT((carried[1][p] - field.x(model.rest_position[p])).norm(), 1e-9) << "step " << step << " particle " << p;
+    }
 
     EXPECT_NEAR(model.total_mass, density_volume, 1e-12 * density_volume) << "step " << step;
     const Vec3 momentum = linear_momentum(model, state);

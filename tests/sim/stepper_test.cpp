@@ -309,6 +309,32 @@ TEST(StepperWarmStart, ChangesTheStartNotTheSolution) {
   EXPECT_LT(warm_cold_difference(IntegratorDef{}.cg_tolerance), 1e-2);
 }
 
+// The warm start's history handed back (as the World does across a model
+// change, through the state transfer) starts the next step where the
+// stepper left off; a restart starts it from 0 and takes more iterations.
+// A history of the wrong size is a restart.
+TEST(StepperWarmStart, CarriedHistoryStartsWhereTheStepperLeftOff) {
+  const SpringModel model = test::fixed_test_box();
+  const IntegratorDef def = integrator(IntegratorKind::kImplicitEuler);
+  const Environment env;
+  SpringState state = rest_state(model);
+  Stepper stepper;
+  for (int k = 0; k < 20; ++k) ASSERT_TRUE(stepper.step(model, env, def, state, kDt).accepted);
+  ASSERT_EQ(stepper.warm_start_history().size(), 3u);
+  Stepper carried = stepper, restarted = stepper, wrong_size = stepper;
+  carried.carry_warm_start(carried.warm_start_history());
+  restarted.reset_warm_start();
+  wrong_size.carry_warm_start({std::vector<Vec3>(model.num_particles() + 1)});
+  SpringState a = state, b = state, c = state, d = state;
+  const StepReport ra = stepper.step(model, env, def, a, kDt), rb = carried.step(model, env, def, b, kDt),
+                   rc = restarted.step(model, env, def, c, kDt), rd = wrong_size.step(model, env, def, d, kDt);
+  EXPECT_EQ(rb.cg_iterations, ra.cg_iterations);
+  EXPECT_EQ(b.x, a.x);
+  EXPECT_GT(rc.cg_iterations, rb.cg_iterations);
+  EXPECT_EQ(rd.cg_iterations, rc.cg_iterations);
+  EXPECT_EQ(d.x, c.x);
+}
+
 TEST(StepperGuard, NanIsRefusedAndTheStateRestored) {
   const engine::TetMesh mesh = box_mesh(100, Vec3(0.1, 0.1, 0.1));
   const SpringModel model = build_spring_model(mesh.tets, mesh.positions, stiff_material());
