@@ -1,8 +1,8 @@
 #include "sim/state_transfer.h"
 
 #include <algorithm>
-#include <cassert>
 #include <limits>
+#include <stdexcept>
 
 #include "engine/tet_geometry.h"
 
@@ -137,7 +137,11 @@ std::pair<Vec3, Vec3> sample_vertex(const engine::Mt& mt, const engine::TetBvh& 
 SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
                            const SpringModel& model, const OriginLookup& origins, TransferReport* report,
                            std::vector<std::vector<Vec3>>* carried) {
-  assert(snapshot.carried.size() <= DeformationSnapshot::kMaxCarried);
+  if (snapshot.carried.size() > DeformationSnapshot::kMaxCarried)
+    throw std::invalid_argument("transfer_state: more carried vectors than DeformationSnapshot::kMaxCarried");
+  for (const auto& field : snapshot.carried)
+    if (field.size() != snapshot.x.size())
+      throw std::invalid_argument("transfer_state: a carried vector's size is not the snapshot's particle count");
   TransferReport local;
   SpringState state;
   const std::size_t n = model.num_particles();

@@ -83,7 +83,9 @@ struct TransferReport {
 };
 
 // The state of `model` (the new one) from the snapshot; `carried` (when
-// given) gets the snapshot's carried vectors for the new particles.
+// given) gets the snapshot's carried vectors for the new particles. Throws
+// std::invalid_argument when the snapshot carries more than kMaxCarried
+// vectors or one of the wrong size.
 SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
                            const SpringModel& model, const OriginLookup& origins = {},
                            TransferReport* report = nullptr, std::vector<std::vector<Vec3>>* carried = nullptr);

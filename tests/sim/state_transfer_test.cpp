@@ -154,5 +154,22 @@ TEST(StateTransfer, CutVerticesComeFromTheirParents) {
   EXPECT_EQ(v, Vec3::Zero());
 }
 
+TEST(StateTransfer, CarriedVectorsOfTheWrongCountOrSizeAreRefused) {
+  engine::MeshLoadDef load;
+  load.builtin_tets = 300;
+  const engine::TetMesh fine = engine::load_mesh("builtin:box", load).mesh;
+  const Mt mt = engine::build_mt(fine);
+  const Frontier frontier = Frontier::finest(mt);
+  const SpringModel model = model_of(mt, frontier, {}, {});
+  const engine::TetBvh bvh(mt);
+  DeformationSnapshot snap = take_snapshot(mt, frontier, model, rest_state(model));
+  snap.carried.assign(DeformationSnapshot::kMaxCarried + 1, snap.v);
+  EXPECT_THROW(transfer_state(mt, bvh, snap, model), std::invalid_argument);
+  snap.carried = {std::vector<Vec3>(model.num_particles() + 1, Vec3::Zero())};
+  EXPECT_THROW(transfer_state(mt, bvh, snap, model), std::invalid_argument);
+  snap.carried = {snap.v};
+  EXPECT_NO_THROW(transfer_state(mt, bvh, snap, model));
+}
+
 }  // namespace
 }  // namespace mtcut::sim
