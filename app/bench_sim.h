@@ -9,8 +9,8 @@ namespace mtcut::app {
 
 struct SimBenchDef {
   int tets = 50000;   // builtin box target (~10k vertices, ~60k springs)
-  int runs = 5;       // timed batches (median reported)
-  int steps = 200;    // explicit steps per batch
+  int runs = 5;       // timed runs (median reported), after a warm-up run
+  int steps = 200;    // explicit steps per run
   int frames = 180;   // implicit 1/60 s frames per run, from rest (3 s)
 };
 

@@ -15,7 +15,7 @@ namespace mtcut::sim {
 // CPU has it (an ifunc; x86-64 Linux). Not FMA: the AVX2 copy does the same
 // two-lane operations in the same order, only VEX-encoded (three operands,
 // fewer register copies), so its results are bit for bit the SSE2 ones.
-// bench sim's implicit frame: about 5% less time.
+// The bench box's assembly and SSOR solve: about 5% less time.
 // -DMTCUT_SPRING_LOOP= builds the SSE2 code alone (to compare).
 #if !defined(MTCUT_SPRING_LOOP)
 #if defined(__x86_64__) && defined(__linux__) && defined(__GNUC__)

@@ -27,8 +27,9 @@ enum class Source { kKept, kInterpolated, kCut, kExtrapolated };
 // A vertex's position, velocity and carried vectors under the snapshot.
 struct Sample {
   Vec3 x = Vec3::Zero(), v = Vec3::Zero();
-  std::array<Vec3, DeformationSnapshot::kMaxCarried> carried{};
+  std::array<Vec3, DeformationSnapshot::kMaxCarried> carried;
 
+  Sample() { carried.fill(Vec3::Zero()); }
   // = particle p's state in the snapshot.
   void set_particle(const DeformationSnapshot& snap, std::size_t p) {
     x = snap.x[p];
@@ -41,12 +42,17 @@ struct Sample {
     v += w * snap.v[p];
     for (std::size_t c = 0; c < snap.carried.size(); ++c) carried[c] += w * snap.carried[c][p];
   }
+  // += w s, over the snapshot's `channels` carried vectors.
+  void add_sample(const Sample& s, double w, std::size_t channels) {
+    x += w * s.x;
+    v += w * s.v;
+    for (std::size_t c = 0; c < channels; ++c) carried[c] += w * s.carried[c];
+  }
 };
 
 Sample sample(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snap, VertId v,
               const OriginLookup& origins, Source& source, int depth) {
   Sample out;
-  out.carried.fill(Vec3::Zero());
   if (v.index() < snap.particle_of.size() && snap.particle_of[v.index()] >= 0) {
     source = Source::kKept;
     out.set_particle(snap, static_cast<std::size_t>(snap.particle_of[v.index()]));
@@ -57,11 +63,8 @@ Sample sample(const engine::Mt& mt, const engine::TetBvh& bvh, const Deformation
       Source ignored;
       for (int k = 0; k < 4; ++k) {
         if (!origin->parents[k].valid()) continue;
-        const Sample parent = sample(mt, bvh, snap, origin->parents[k], origins, ignored, depth + 1);
-        const double w = origin->weights[k];
-        out.x += w * parent.x;
-        out.v += w * parent.v;
-        for (std::size_t c = 0; c < snap.carried.size(); ++c) out.carried[c] += w * parent.carried[c];
+        out.add_sample(sample(mt, bvh, snap, origin->parents[k], origins, ignored, depth + 1), origin->weights[k],
+                       snap.carried.size());
       }
       source = Source::kCut;
       return out;

@@ -69,11 +69,12 @@ Environment World::environment_for(const ScalpelPose& pose) const {
 // The implicit warm start is carried over as the velocities are, not
 // restarted from 0: a frontier that follows the scalpel changes every few
 // frames (the liver scenario: 73 times in 150 frames, each such frame's CG
-// iterations 3.0 -> 1.6 on average).
+// iterations 3.0 -> 1.6 on average). The stepper's history is always that
+// of the current model (it is resized at each step and carried at each
+// rebuild); the explicit integrator has none worth carrying.
 void World::rebuild_model_from(DeformationSnapshot snapshot, const OriginIndex* origins) {
   model_ = build_model(mt_, frontier_, def_);
-  snapshot.carried = stepper_.warm_start_history();
-  if (!snapshot.carried.empty() && snapshot.carried[0].size() != snapshot.x.size()) snapshot.carried.clear();
+  if (def_.integrator.kind == IntegratorKind::kImplicitEuler) snapshot.carried = stepper_.warm_start_history();
   std::vector<std::vector<Vec3>> carried;
   state_ = transfer_state(mt_, bvh_, snapshot, model_, origins ? origins->lookup() : OriginLookup{}, nullptr,
                           &carried);
