@@ -130,6 +130,16 @@ int CutPolygon::side(const Vec3& x) const { return orient3d_sign(plane_[0], plan
 
 double CutPolygon::signed_distance(const Vec3& x) const { return (x - origin_).dot(normal_); }
 
+bool CutPolygon::box_may_touch_plane(const engine::Aabb& box, double slack) const {
+  const Vec3 centre = box.center();
+  const Vec3 half = 0.5 * (box.hi - box.lo) + Vec3::Constant(slack);
+  const double reach = half.dot(normal_.cwiseAbs());  // the box's half-width along the normal
+  // signed_distance and side() disagree by rounding only (normal_ is the
+  // exact plane's, from the same corners): orders of magnitude below this.
+  const double rounding = 1e-9 * ((centre - origin_).norm() + half.norm());
+  return std::abs(signed_distance(centre)) <= reach + rounding;  // false for an empty box (NaN centre)
+}
+
 int CutPolygon::line_crossing(const Vec3& a, const Vec3& b) const {
   bool pos = false, neg = false, zero = false;
   const std::size_t n = corners_.size();

@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include "engine/mt/bvh.h"
 #include "engine/predicates.h"
 
 namespace mtcut::cut {
@@ -53,6 +54,10 @@ class CutPolygon {
   int side(const Vec3& x) const;
   // Approximate signed distance of x to the plane (positive on the normal's side).
   double signed_distance(const Vec3& x) const;
+  // False only when every point within `slack` (along each axis) of `box`
+  // lies on one side of the plane by far more than rounding, so that side()
+  // is the same, nonzero, for all of them.
+  bool box_may_touch_plane(const engine::Aabb& box, double slack = 0) const;
 
   // Exact: does the line through a and b pass through the polygon?
   // +1 strictly inside, 0 through its outline, -1 outside (or parallel).

@@ -91,13 +91,17 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   box.lo = polygon_.box_min() - Vec3::Constant(margin);
   box.hi = polygon_.box_max() + Vec3::Constant(margin);
 
-  // Tets with every vertex strictly on one side are dropped before the sort
-  // (a cut through the whole object finds every tet).
+  // Tets with every vertex strictly on one side are dropped before the sort,
+  // and so are the BVH's nodes that lie on one side of the plane (their
+  // deformed tets within `displacement` of them): a cut through the whole
+  // object walks only the nodes along its plane, not every tet.
   std::vector<TetId> found;
-  bvh.for_each_overlapping(mt, box, [&](TetId t) {
-    if (classifier.may_be_cut(mt.tet(t))) found.push_back(t);
-    return true;
-  });
+  bvh.for_each_overlapping(
+      mt, box, [&](const engine::Aabb& node) { return polygon_.box_may_touch_plane(node, displacement); },
+      [&](TetId t) {
+        if (classifier.may_be_cut(mt.tet(t))) found.push_back(t);
+        return true;
+      });
   std::sort(found.begin(), found.end());  // BVH order must not leak into the result
   for (TetId t : found) classifier.add_candidate(mt.tet(t));
   add_tets_around_on_vertices(mt, bvh, classifier, found);

@@ -63,11 +63,23 @@ class TetBvh {
   // the exact geometry). visit(TetId) returns false to stop.
   template <class Visit>
   void for_each_overlapping(const Mt& mt, const Aabb& box, Visit&& visit) const {
+    for_each_overlapping(mt, box, [](const Aabb&) { return true; }, visit);
+  }
+  // The same, skipping the nodes whose box keep_node(const Aabb&) rejects:
+  // a filter the caller knows to hold for every box around a tet it wants
+  // (a cut skips the nodes lying on one side of its plane, most of the
+  // tree when the cut spans the object).
+  template <class KeepNode, class Visit>
+  void for_each_overlapping(const Mt& mt, const Aabb& box, KeepNode&& keep_node, Visit&& visit) const {
     const auto nodes = bvh_.nodes();
-    bvh_.walk([&](std::int32_t n) { return nodes[static_cast<std::size_t>(n)].box.overlaps(box); },
-              [&](std::int32_t n) {
-                return visit_leaf(n, [&](TetId t) { return !tet_box_overlaps(mt, t, box) || visit(t); });
-              });
+    bvh_.walk(
+        [&](std::int32_t n) {
+          const Aabb& node = nodes[static_cast<std::size_t>(n)].box;
+          return node.overlaps(box) && keep_node(node);
+        },
+        [&](std::int32_t n) {
+          return visit_leaf(n, [&](TetId t) { return !tet_box_overlaps(mt, t, box) || visit(t); });
+        });
   }
   // Every indexed tet holding p (closed tets, exact).
   template <class Visit>

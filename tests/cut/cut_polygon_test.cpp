@@ -1,0 +1,69 @@
+// CutPolygon's box test against its plane, which prunes the cut's search:
+// a box it rejects must hold no point on the plane or across it.
+#include "cut/cut_polygon.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace mtcut::cut {
+namespace {
+
+using engine::Aabb;
+
+// A random point of the box grown by `slack`, corners included.
+Vec3 point_in(const Aabb& box, double slack, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::bernoulli_distribution corner(0.3);
+  Vec3 p;
+  for (int k = 0; k < 3; ++k) {
+    const double lo = box.lo[k] - slack, hi = box.hi[k] + slack;
+    p[k] = corner(rng) ? (u(rng) < 0.5 ? lo : hi) : lo + u(rng) * (hi - lo);
+  }
+  return p;
+}
+
+TEST(CutPolygon, BoxesAwayFromThePlaneLieOnOneSide) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> coord(-1, 1), size(0, 0.4), slack_of(0, 0.05);
+  std::size_t rejected = 0, kept = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec3 c(coord(rng), coord(rng), coord(rng));
+    const Vec3 a = Vec3(coord(rng), coord(rng), coord(rng)).normalized();
+    const Vec3 b = a.cross(Vec3(coord(rng), coord(rng), coord(rng))).normalized();
+    const double h = 0.2 + size(rng);
+    const CutPolygon polygon =
+        CutPolygon::from_points({c + h * (a + b), c + h * (b - a), c - h * (a + b), c + h * (a - b)});
+    Aabb box;
+    box.extend(Vec3(coord(rng), coord(rng), coord(rng)));
+    box.extend(Vec3(box.lo + Vec3(size(rng), size(rng), size(rng))));
+    const double slack = trial % 2 ? slack_of(rng) : 0.0;
+    if (polygon.box_may_touch_plane(box, slack)) {
+      ++kept;
+      continue;
+    }
+    ++rejected;
+    const int side = polygon.side(box.lo - Vec3::Constant(slack));
+    ASSERT_NE(side, 0) << trial;
+    for (int i = 0; i < 50; ++i) ASSERT_EQ(polygon.side(point_in(box, slack, rng)), side) << trial;
+  }
+  // Both outcomes are exercised.
+  EXPECT_GT(rejected, 200u);
+  EXPECT_GT(kept, 200u);
+}
+
+TEST(CutPolygon, BoxesAcrossOrOnThePlaneAreKept) {
+  const CutPolygon polygon =
+      CutPolygon::from_points({Vec3(0, 0, 0.5), Vec3(1, 0, 0.5), Vec3(1, 1, 0.5), Vec3(0, 1, 0.5)});
+  Aabb across{Vec3(3, 3, 0.4), Vec3(4, 4, 0.6)};  // beyond the outline: the plane is what counts
+  EXPECT_TRUE(polygon.box_may_touch_plane(across));
+  Aabb touching{Vec3(0, 0, 0.5), Vec3(1, 1, 0.7)};
+  EXPECT_TRUE(polygon.box_may_touch_plane(touching));
+  Aabb above{Vec3(0, 0, 0.6), Vec3(1, 1, 0.7)};
+  EXPECT_FALSE(polygon.box_may_touch_plane(above));
+  EXPECT_TRUE(polygon.box_may_touch_plane(above, 0.1));  // its points may move down onto the plane
+  EXPECT_FALSE(polygon.box_may_touch_plane(Aabb{}));     // empty
+}
+
+}  // namespace
+}  // namespace mtcut::cut
