@@ -198,9 +198,7 @@ bool CutClassifier::add_candidate(const Tet& tet) {
   for (int k = 0; k < 6; ++k) {
     const VertId a = tet[kTetEdges[k][0]], b = tet[kTetEdges[k][1]];
     if (s[kTetEdges[k][0]] * s[kTetEdges[k][1]] >= 0) continue;
-    auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
-    if (fresh) it->second.t = raw_parameter(a, b);
-    const double t = it->second.t;
+    const double t = edge(a, b).t;
     const VertId lo = a < b ? a : b, hi = a < b ? b : a;
     if (t < snap_ && !at(lo).vetoed) put_on(lo);
     if (t > 1 - snap_ && !at(hi).vetoed) put_on(hi);
@@ -274,28 +272,41 @@ bool CutClassifier::snapped(VertId v) const {
 bool CutClassifier::vetoed(VertId v) const { return at(v).vetoed; }
 bool CutClassifier::veto_requested(VertId v) const { return at(v).requested_off; }
 
-double CutClassifier::crossing_parameter(VertId a, VertId b) const {
+CutClassifier::EdgeInfo& CutClassifier::edge(VertId a, VertId b) const {
   auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
-  if (fresh) it->second.t = raw_parameter(a, b);  // an edge at a vertex kept off the plane
-  // Every cut point stays `snap` away from the edge's ends: snapping makes
-  // that so for the ends on the cut; an end kept off it, or sided by its
-  // neighbours while on the plane, keeps the point away this way.
-  return std::clamp(it->second.t, snap_, 1 - snap_);
+  if (fresh) {
+    it->second.t = raw_parameter(a, b);
+    it->second.number = static_cast<std::int32_t>(edges_.size() - 1);
+  }
+  return it->second;
 }
 
-bool CutClassifier::crossing_covered(VertId a, VertId b) const {
-  auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
-  if (fresh) it->second.t = raw_parameter(a, b);
-  if (it->second.covered < 0) {
+double CutClassifier::crossing_parameter(VertId a, VertId b) const {
+  // (An edge met first here is one at a vertex kept off the plane.) Every
+  // cut point stays `snap` away from the edge's ends: snapping makes that so
+  // for the ends on the cut; an end kept off it, or sided by its neighbours
+  // while on the plane, keeps the point away this way.
+  return std::clamp(edge(a, b).t, snap_, 1 - snap_);
+}
+
+bool CutClassifier::crossing_covered(VertId a, VertId b) const { return covered(edge(a, b), a, b); }
+
+bool CutClassifier::covered(EdgeInfo& e, VertId a, VertId b) const {
+  if (e.covered < 0) {
     const VertId lo = a < b ? a : b, hi = a < b ? b : a;
     // Closed: a crossing on the outline is cut, so strokes sharing an edge
     // leave nothing between them.
-    it->second.covered = polygon_.line_crossing(positions_[lo.index()], positions_[hi.index()]) >= 0 ? 1 : 0;
+    e.covered = polygon_.line_crossing(positions_[lo.index()], positions_[hi.index()]) >= 0 ? 1 : 0;
   }
-  return it->second.covered == 1;
+  return e.covered == 1;
 }
 
 TetConfig CutClassifier::configure(const Tet& tet) const {
+  std::array<std::int32_t, 6> unused;
+  return configure(tet, unused);
+}
+
+TetConfig CutClassifier::configure(const Tet& tet, std::array<std::int32_t, 6>& edge_numbers) const {
   TetConfig config;
   for (int i = 0; i < 4; ++i) {
     config.vertex[i] = state(tet[i]);
@@ -304,9 +315,14 @@ TetConfig CutClassifier::configure(const Tet& tet) const {
     for (int j = 0; j < 4; ++j) rank += tet[j] < tet[i];
     config.rank[i] = static_cast<std::uint8_t>(rank);
   }
-  for (int k = 0; k < 6; ++k)
-    if (config.straddles(k) && crossing_covered(tet[kTetEdges[k][0]], tet[kTetEdges[k][1]]))
-      config.covered |= static_cast<std::uint8_t>(1u << k);
+  for (int k = 0; k < 6; ++k) {
+    edge_numbers[k] = -1;
+    if (!config.straddles(k)) continue;
+    const VertId a = tet[kTetEdges[k][0]], b = tet[kTetEdges[k][1]];
+    EdgeInfo& e = edge(a, b);
+    if (covered(e, a, b)) config.covered |= static_cast<std::uint8_t>(1u << k);
+    edge_numbers[k] = e.number;
+  }
   return config;
 }
 

@@ -177,6 +177,13 @@ class CutClassifier {
   bool crossing_covered(VertId a, VertId b) const;
 
   TetConfig configure(const Tet& tet) const;
+  // The same, and the number of each local edge (kTetEdges) that straddles
+  // the plane, -1 for the others: straddling edges are numbered 0, 1, ... as
+  // the classifier first meets them, so a caller can keep per-edge data (the
+  // cut points on it) in an array instead of a map keyed by its ends.
+  TetConfig configure(const Tet& tet, std::array<std::int32_t, 6>& edge_numbers) const;
+  // Edges numbered so far (an upper bound of the numbers configure gives).
+  std::size_t edges_numbered() const { return edges_.size(); }
 
   // A new point on a face, with barycentric weights on the face's vertices
   // (in the order given), so that rest and deformed positions both follow.
@@ -202,9 +209,15 @@ class CutClassifier {
  private:
   struct EdgeInfo {
     double t = 0;              // from the lower id
+    std::int32_t number = 0;   // in the order edges are met
     std::int8_t covered = -1;  // -1 not computed yet
   };
   static std::uint64_t edge_key(VertId a, VertId b);
+  // The entry of edge (a, b), made (numbered, its parameter computed) the
+  // first time.
+  EdgeInfo& edge(VertId a, VertId b) const;
+  // Whether the polygon crosses edge (a, b) of entry e (computed once).
+  bool covered(EdgeInfo& e, VertId a, VertId b) const;
   std::int8_t raw_side(VertId v) const {
     const std::int8_t raw = at(v).raw;
     return raw != 2 ? raw : compute_side(v);

@@ -112,11 +112,12 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   // numbered as this scan first meets them, then renumbered by key).
   first_vertex_ = mt.num_vertices();
   std::vector<TetConfig> configs(found.size());
+  std::vector<std::array<std::int32_t, 6>> edge_numbers(found.size());
   std::vector<std::uint8_t> split(found.size(), 0);
   std::vector<std::uint8_t> positive(found.size(), 0);  // not split, on the positive side
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Tet& tet = mt.tet(found[i]);
-    configs[i] = classifier.configure(tet);
+    configs[i] = classifier.configure(tet, edge_numbers[i]);
     split[i] = configs[i].is_cut();
     positive[i] = !split[i] && side_of_uncut(tet, classifier) == VertexState::kPos;
   }
@@ -138,6 +139,7 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
       for (VertId v : mt.tet(found[i]))
         if (classifier.state(v) == VertexState::kOnActive) separating[v.index()] = 1;
   pending_of_.reserve(found.size());
+  edge_point_.assign(3 * classifier.edges_numbered(), -1);  // every number configure gave
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Tet& tet = mt.tet(found[i]);
     Pending p;
@@ -149,13 +151,14 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
       if (!on_split_vertex || positive[i]) continue;
     }
     if (p.split)
-      resolve_split(p, tet, configs[i], classifier, table);
+      resolve_split(p, tet, configs[i], edge_numbers[i], classifier, table);
     else
       resolve_relabel(p, tet, classifier);
     pending_of_.emplace(p.tet.value, static_cast<std::int32_t>(pending_.size()));
     pending_.push_back(p);
   }
 
+  edge_point_ = {};  // indexes the scan's numbering, which number_points_by_key changes
   number_points_by_key();
 
   // Jobs: the fragments creating the pending tets, each with its tets.
@@ -233,6 +236,20 @@ VertId MtCut::point_id(const PointKey& key, Source&& source) {
   return VertId(static_cast<std::int32_t>(first_vertex_) + it->second);
 }
 
+template <class Source>
+VertId MtCut::edge_point_id(std::int32_t edge, const Tet& tet, Label label, Source&& source) {
+  // A straddling edge's points are keyed by its number and the label's side
+  // (none, negative, positive), never through point_index_.
+  const std::size_t slot = 3 * static_cast<std::size_t>(edge) + static_cast<std::size_t>(label_side(label));
+  if (slot >= edge_point_.size()) edge_point_.resize(std::max(slot + 1, 2 * edge_point_.size()), -1);
+  std::int32_t& index = edge_point_[slot];
+  if (index < 0) {
+    index = static_cast<std::int32_t>(points_.size());
+    points_.push_back({point_key(tet, label), source()});
+  }
+  return VertId(static_cast<std::int32_t>(first_vertex_) + index);
+}
+
 void MtCut::number_points_by_key() {
   // Ids follow the keys, not the scan: the scan's order is that of tet ids,
   // which follow the order the jobs of the last cut ran in. The keys are
@@ -272,7 +289,8 @@ void MtCut::number_points_by_key() {
   point_index_.clear();  // holds the scan's numbering; not needed any more
 }
 
-void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config, const CutClassifier& classifier,
+void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config,
+                          const std::array<std::int32_t, 6>& edge_numbers, const CutClassifier& classifier,
                           SplitTable& table) {
   const SplitRecipe& recipe = table.recipe(config);
   p.recipe = &recipe;
@@ -287,10 +305,13 @@ void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config, c
     for (int c = 0; c < 4; ++c) {
       const Label l = t[c];
       if (id_of[l] < 0) {
+        const auto source = [&] { return point_source(tet, l, classifier, recipe); };
         if (label_kind(l) == LabelKind::kVertex && label_side(l) != LabelSide::kNeg)
           id_of[l] = tet[label_index(l)].value;  // the vertex itself
+        else if (label_kind(l) == LabelKind::kEdge && edge_numbers[label_index(l)] >= 0)
+          id_of[l] = edge_point_id(edge_numbers[label_index(l)], tet, l, source).value;
         else
-          id_of[l] = point_id(point_key(tet, l), [&] { return point_source(tet, l, classifier, recipe); }).value;
+          id_of[l] = point_id(point_key(tet, l), source).value;
       }
       piece[c] = VertId(id_of[l]);
     }

@@ -131,7 +131,12 @@ class MtCut {
   // when the cut first meets it; number_points_by_key() renumbers.
   template <class Source>
   VertId point_id(const PointKey& key, Source&& source);
-  void resolve_split(Pending& p, const Tet& tet, const TetConfig& config, const CutClassifier& classifier,
+  // The vertex of a point on straddling edge number `edge` (the
+  // classifier's), on the side of `label`: as point_id, without a map.
+  template <class Source>
+  VertId edge_point_id(std::int32_t edge, const Tet& tet, Label label, Source&& source);
+  void resolve_split(Pending& p, const Tet& tet, const TetConfig& config,
+                     const std::array<std::int32_t, 6>& edge_numbers, const CutClassifier& classifier,
                      SplitTable& table);
   void resolve_relabel(Pending& p, const Tet& tet, const CutClassifier& classifier);
   // Renumbers the new points in key order (in points_ and piece_tets_).
@@ -148,6 +153,9 @@ class MtCut {
   std::size_t first_vertex_ = 0;  // id of the first new vertex (the MT's vertex count at start)
   std::vector<NewPoint> points_;  // new points, in id (key) order
   absl::flat_hash_map<PointKey, std::int32_t, PointKeyHash> point_index_;  // key -> index in points_
+  // Points on straddling edges (most of them), index in points_ by 3 x the
+  // classifier's edge number + the label's side; -1 = not met yet.
+  std::vector<std::int32_t> edge_point_;
   bool vertices_added_ = false;
   std::vector<Pending> pending_;    // tets to change, in the search's order
   std::vector<Tet> piece_tets_;     // the pieces of every pending tet, final vertex ids
