@@ -21,6 +21,7 @@ struct MtCutWorkspace {
   CutClassifier::Scratch classifier;   // the search's vertex states
   std::vector<std::uint8_t> separating;  // (>= n_vertices) 1: the cut splits the vertex; all 0 between cuts
   DecompositionScratch decomposition;  // the DAG update's
+  std::vector<std::uint64_t> id_bits;  // (>= n_tets / 64) the search's sort of tet and fragment ids; all 0 between cuts
 
   // Handed back clean (between cuts): every entry pristine. O(n_vertices), for tests.
   engine::ValidationReport validate() const;
