@@ -167,7 +167,6 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
     if (split[i] || positive[i])
       for (VertId v : mt.tet(found[i]))
         if (classifier.state(v) == VertexState::kOnActive) separating[v.index()] = 1;
-  pending_of_.reserve(found.size());
   edge_point_.assign(3 * classifier.edges_numbered(), -1);  // every number configure gave
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Tet& tet = mt.tet(found[i]);
@@ -183,7 +182,6 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
       resolve_split(p, tet, configs[i], edge_numbers[i], classifier, table);
     else
       resolve_relabel(p, tet, classifier);
-    pending_of_.emplace(p.tet.value, static_cast<std::int32_t>(pending_.size()));
     pending_.push_back(p);
   }
 
@@ -204,7 +202,15 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   std::vector<std::uint32_t> fill(job_first_.begin(), job_first_.end() - 1);
   for (std::size_t i = 0; i < pending_.size(); ++i) job_tets_[fill[job_index[i]]++] = static_cast<std::int32_t>(i);
   job_done_.assign(jobs_.size(), 0);
+  // Last, when nothing can throw any more: the destructor resets these.
+  std::vector<std::int32_t>& pending_of = workspace_->pending_of;
+  if (pending_of.size() < mt.num_tets()) pending_of.resize(mt.num_tets(), -1);
+  for (std::size_t i = 0; i < pending_.size(); ++i) pending_of[pending_[i].tet.index()] = static_cast<std::int32_t>(i);
   find_seconds_ = seconds_since(start);
+}
+
+MtCut::~MtCut() {
+  for (const Pending& p : pending_) workspace_->pending_of[p.tet.index()] = -1;
 }
 
 void MtCut::add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, CutClassifier& classifier,
@@ -251,8 +257,8 @@ std::size_t MtCut::job_cost(const Mt& mt, std::size_t job) const {
   std::size_t cost = 1;
   for (std::int32_t i : job_tets(job)) cost += !pending_[static_cast<std::size_t>(i)].done;
   for (TetId t : mt.replaced(jobs_[job])) {
-    const auto it = pending_of_.find(t.value);
-    if (it != pending_of_.end() && !pending_[static_cast<std::size_t>(it->second)].done) ++cost;
+    const std::int32_t i = pending_index(t);
+    if (i >= 0 && !pending_[static_cast<std::size_t>(i)].done) ++cost;
   }
   return cost;
 }
@@ -417,9 +423,8 @@ void MtCut::process(Mt& mt, TetBvh& bvh, std::size_t job, MtChangeReport& report
   }
   from_parents_.clear();
   for (TetId t : mt.replaced(f)) {
-    const auto it = pending_of_.find(t.value);
-    if (it != pending_of_.end() && !pending_[static_cast<std::size_t>(it->second)].done)
-      from_parents_.push_back(it->second);
+    const std::int32_t i = pending_index(t);
+    if (i >= 0 && !pending_[static_cast<std::size_t>(i)].done) from_parents_.push_back(i);
   }
   for (std::int32_t i : from_parents_) change_tet(mt, bvh, pending_[static_cast<std::size_t>(i)], report);
   const auto dag_start = Clock::now();
@@ -458,7 +463,9 @@ engine::ValidationReport MtCut::validate(const Mt& mt) const {
     }
   }
   if (done != jobs_done_) report.add("MtCut: jobs done miscounted");
-  if (pending_of_.size() != pending_.size()) report.add("MtCut: a tet is pending twice");
+  for (std::size_t i = 0; i < pending_.size(); ++i)
+    if (pending_index(pending_[i].tet) != static_cast<std::int32_t>(i))
+      report.add("MtCut: tet " + std::to_string(pending_[i].tet.value) + " pending twice or not indexed");
   return report;
 }
 

@@ -79,6 +79,7 @@ class MtCut {
   // destroyed (nullptr: the cut allocates its own, a pass over the vertices).
   MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::span<const Vec3> geometry,
         const MtCutDef& def, SplitTable& table, MtCutWorkspace* workspace = nullptr);
+  ~MtCut();  // hands the workspace back clean
   MtCut(const MtCut&) = delete;
   MtCut& operator=(const MtCut&) = delete;
 
@@ -142,6 +143,12 @@ class MtCut {
   // Renumbers the new points in key order (in points_ and piece_tets_).
   void number_points_by_key();
   std::size_t job_of(FragId f) const;
+  // Index in pending_ of tet t, -1 when t is not pending (the workspace's
+  // array, over the tets that existed when the cut started).
+  std::int32_t pending_index(TetId t) const {
+    const std::vector<std::int32_t>& of = workspace_->pending_of;
+    return t.index() < of.size() ? of[t.index()] : -1;
+  }
   std::span<const std::int32_t> job_tets(std::size_t job) const {
     return std::span<const std::int32_t>(job_tets_).subspan(job_first_[job], job_first_[job + 1] - job_first_[job]);
   }
@@ -160,7 +167,6 @@ class MtCut {
   std::vector<Pending> pending_;    // tets to change, in the search's order
   std::vector<Tet> piece_tets_;     // the pieces of every pending tet, final vertex ids
   std::size_t new_tets_ = 0;        // pieces of split tets
-  absl::flat_hash_map<std::int32_t, std::int32_t> pending_of_;  // tet id -> index in pending_
   std::vector<FragId> jobs_;
   std::vector<std::uint32_t> job_first_;  // (jobs + 1) offsets into job_tets_
   std::vector<std::int32_t> job_tets_;    // pending tets each job's fragment creates

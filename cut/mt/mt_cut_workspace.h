@@ -21,6 +21,7 @@ struct MtCutWorkspace {
   CutClassifier::Scratch classifier;   // the search's vertex states
   std::vector<std::uint8_t> separating;  // (>= n_vertices) 1: the cut splits the vertex; all 0 between cuts
   DecompositionScratch decomposition;  // the DAG update's
+  std::vector<std::int32_t> pending_of;  // (>= n_tets) index among the cut's pending tets; all -1 between cuts
   std::vector<std::uint64_t> id_bits;  // (>= n_tets / 64) the search's sort of tet and fragment ids; all 0 between cuts
 
   // Handed back clean (between cuts): every entry pristine. O(n_vertices), for tests.
