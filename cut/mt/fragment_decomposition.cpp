@@ -81,7 +81,11 @@ Decomposition decompose_fragment(Mt& mt, FragId f, DecompositionScratch& s) {
   s.tets.insert(s.tets.end(), replaced.begin(), replaced.end());
   out.outcome = DecomposeOutcome::kSplit;
   out.parts.push_back(f);
-  for (std::size_t g = 1; g < k; ++g) out.parts.push_back(mt.add_fragment());
+  for (std::size_t g = 1; g < k; ++g) {
+    out.parts.push_back(mt.add_fragment());
+    mt.reserve_fragment(out.parts[g], static_cast<std::size_t>(s.created_count[g]),
+                        static_cast<std::size_t>(s.replaced_count[g]));
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const auto g = static_cast<std::size_t>(s.group[i]);
     if (g == 0) continue;

@@ -146,6 +146,11 @@ void Mt::set_death(TetId t, FragId f) {
   ++revision_;
 }
 
+void Mt::reserve_fragment(FragId f, std::size_t created, std::size_t replaced) {
+  frag_created_[f.index()].reserve(created);
+  frag_replaced_[f.index()].reserve(replaced);
+}
+
 float Mt::fragment_error(FragId f) const {
   float e = 0.0f;
   for (TetId t : created(f)) e = std::max(e, error(t));

@@ -106,6 +106,8 @@ class Mt {
   // Largest error of the tets f creates (0 when it creates none).
   float fragment_error(FragId f) const;
   FragId add_fragment();
+  // Room for f's lists to grow to `created` and `replaced` tets without reallocating.
+  void reserve_fragment(FragId f, std::size_t created, std::size_t replaced);
   void set_drain(FragId f) { drain_ = f; }
   // Distinct births of replaced(f) / deaths of created(f), ascending.
   std::vector<FragId> parents(FragId f) const;
