@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <tuple>
 
 #include "cut/mt/mt_cut_workspace.h"
 #include "cut/mt/mt_pieces.h"
@@ -68,6 +69,12 @@ void run_sequence(const std::string& name, int cuts, std::uint64_t seed) {
     split += r.counts.split_tets;
     whole += r.counts.whole_fragments;
     EXPECT_EQ(r.counts.new_vertices, r.made_vertices.size());
+    // New vertices are numbered in the order of their keys, consecutively.
+    const auto key_of = [](const cut::PointKey& k) { return std::tie(k.kind, k.side, k.ids); };
+    for (std::size_t k = 1; k < r.made_vertices.size(); ++k) {
+      EXPECT_EQ(r.made_vertices[k].id.value, r.made_vertices[k - 1].id.value + 1);
+      EXPECT_LT(key_of(r.made_vertices[k - 1].key), key_of(r.made_vertices[k].key)) << "cut " << i << " vertex " << k;
+    }
     for (const auto& m : r.made_vertices) {
       Vec3 rest = Vec3::Zero();
       for (int k = 0; k < 4; ++k)
