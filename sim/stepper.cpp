@@ -26,9 +26,15 @@ void Stepper::restart_warm_start(std::size_t n) {
   extrapolation2_ = 0.0;
 }
 
-std::vector<std::vector<Vec3>> Stepper::warm_start_history() const {
+std::vector<std::vector<Vec3>> Stepper::take_warm_start_history() {
   if (dv_.empty()) return {};
-  return {dv_, dv_last_, dv_before_};
+  std::vector<std::vector<Vec3>> history;
+  history.reserve(3);
+  for (auto* v : {&dv_, &dv_last_, &dv_before_}) {
+    history.push_back(std::move(*v));
+    v->clear();  // the extrapolation factors stay, for the history carried back
+  }
+  return history;
 }
 
 void Stepper::carry_warm_start(std::vector<std::vector<Vec3>> history) {

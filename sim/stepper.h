@@ -59,9 +59,11 @@ class Stepper {
   // Forgets the warm start (call when particles are renumbered).
   void reset_warm_start() { restart_warm_start(0); }
   // The implicit warm start's history, per particle (dv of the last three
-  // steps, latest first; empty before the first implicit step), to carry
-  // across a change of the model (state_transfer.h) ...
-  std::vector<std::vector<Vec3>> warm_start_history() const;
+  // steps, latest first; empty before the first implicit step), moved out
+  // to carry across a change of the model (state_transfer.h); the stepper
+  // is left without one (its next step starts from 0 unless it is carried
+  // back) ...
+  std::vector<std::vector<Vec3>> take_warm_start_history();
   // ... and to take back, for the new model's particles (the extrapolation
   // factors are kept). A history of the wrong size is a restart.
   void carry_warm_start(std::vector<std::vector<Vec3>> history);

@@ -74,7 +74,7 @@ Environment World::environment_for(const ScalpelPose& pose) const {
 // rebuild); the explicit integrator has none worth carrying.
 void World::rebuild_model_from(DeformationSnapshot snapshot, const OriginIndex* origins) {
   model_ = build_model(mt_, frontier_, def_);
-  if (def_.integrator.kind == IntegratorKind::kImplicitEuler) snapshot.carried = stepper_.warm_start_history();
+  if (def_.integrator.kind == IntegratorKind::kImplicitEuler) snapshot.carried = stepper_.take_warm_start_history();
   std::vector<std::vector<Vec3>> carried;
   state_ = transfer_state(mt_, bvh_, snapshot, model_, origins ? origins->lookup() : OriginLookup{}, nullptr,
                           &carried);

@@ -312,7 +312,7 @@ TEST(StepperWarmStart, ChangesTheStartNotTheSolution) {
 // The warm start's history handed back (as the World does across a model
 // change, through the state transfer) starts the next step where the
 // stepper left off; a restart starts it from 0 and takes more iterations.
-// A history of the wrong size is a restart.
+// A history of the wrong size, or none, is a restart.
 TEST(StepperWarmStart, CarriedHistoryStartsWhereTheStepperLeftOff) {
   const SpringModel model = test::fixed_test_box();
   const IntegratorDef def = integrator(IntegratorKind::kImplicitEuler);
@@ -320,19 +320,25 @@ TEST(StepperWarmStart, CarriedHistoryStartsWhereTheStepperLeftOff) {
   SpringState state = rest_state(model);
   Stepper stepper;
   for (int k = 0; k < 20; ++k) ASSERT_TRUE(stepper.step(model, env, def, state, kDt).accepted);
-  ASSERT_EQ(stepper.warm_start_history().size(), 3u);
-  Stepper carried = stepper, restarted = stepper, wrong_size = stepper;
-  carried.carry_warm_start(carried.warm_start_history());
+  Stepper carried = stepper, restarted = stepper, wrong_size = stepper, taken = stepper;
+  std::vector<std::vector<Vec3>> history = carried.take_warm_start_history();
+  ASSERT_EQ(history.size(), 3u);
+  carried.carry_warm_start(std::move(history));
+  EXPECT_EQ(taken.take_warm_start_history().size(), 3u);
+  EXPECT_TRUE(taken.take_warm_start_history().empty()) << "taken once";
   restarted.reset_warm_start();
   wrong_size.carry_warm_start({std::vector<Vec3>(model.num_particles() + 1)});
-  SpringState a = state, b = state, c = state, d = state;
+  SpringState a = state, b = state, c = state, d = state, e = state;
   const StepReport ra = stepper.step(model, env, def, a, kDt), rb = carried.step(model, env, def, b, kDt),
-                   rc = restarted.step(model, env, def, c, kDt), rd = wrong_size.step(model, env, def, d, kDt);
+                   rc = restarted.step(model, env, def, c, kDt), rd = wrong_size.step(model, env, def, d, kDt),
+                   re = taken.step(model, env, def, e, kDt);
   EXPECT_EQ(rb.cg_iterations, ra.cg_iterations);
   EXPECT_EQ(b.x, a.x);
   EXPECT_GT(rc.cg_iterations, rb.cg_iterations);
   EXPECT_EQ(rd.cg_iterations, rc.cg_iterations);
   EXPECT_EQ(d.x, c.x);
+  EXPECT_EQ(re.cg_iterations, rc.cg_iterations) << "a history taken and not carried back is a restart";
+  EXPECT_EQ(e.x, c.x);
 }
 
 TEST(StepperGuard, NanIsRefusedAndTheStateRestored) {
