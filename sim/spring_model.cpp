@@ -32,6 +32,72 @@ std::uint64_t morton_key(const engine::Vec3& p, const engine::Vec3& lo, const en
   return key;
 }
 
+// One spring per distinct edge of the tets (particle indices), a < b,
+// sorted by (a, b), each with Van Gelder's stiffness from its tets' volumes
+// summed in tet order (well defined, so the model is the same bits whatever
+// sort a library brings). The edge uses are bucketed by a (a counting sort:
+// tet order kept within a bucket); each bucket is merged by b through
+// slot_of, then sorted by b (a handful of springs per particle). O(n + m):
+// a comparison sort of all the uses took most of a model rebuild.
+void add_springs(const std::vector<std::array<std::int32_t, 4>>& tets, const std::vector<double>& volumes,
+                 const MaterialDef& material, SpringModel& model) {
+  const std::size_t n = model.rest_position.size();
+  std::vector<std::int32_t> bucket_start(n + 1, 0);  // (n + 1) particle a's uses: [start[a], start[a + 1])
+  for (const auto& p : tets)
+    for (const auto& e : engine::kTetEdges) ++bucket_start[static_cast<std::size_t>(std::min(p[e[0]], p[e[1]])) + 1];
+  for (std::size_t i = 0; i < n; ++i) bucket_start[i + 1] += bucket_start[i];
+  struct Use {
+    std::int32_t b;  // the edge's higher end
+    double volume;   // of the tet using it
+  };
+  std::vector<Use> uses(6 * tets.size());  // by lower end, in tet order
+  {
+    std::vector<std::int32_t> next(bucket_start.begin(), bucket_start.end() - 1);
+    for (std::size_t t = 0; t < tets.size(); ++t)
+      for (const auto& e : engine::kTetEdges) {
+        const auto a = tets[t][e[0]], b = tets[t][e[1]];
+        uses[static_cast<std::size_t>(next[static_cast<std::size_t>(std::min(a, b))]++)] = {std::max(a, b),
+                                                                                             volumes[t]};
+      }
+  }
+
+  std::vector<double> volume_sum;  // (n_springs)
+  volume_sum.reserve(uses.size() / 3);
+  model.spring_b.reserve(uses.size() / 3);
+  std::vector<std::int32_t> slot_of(n, -1);  // b's spring in the current bucket, if >= its first
+  for (std::size_t a = 0; a < n; ++a) {
+    const std::size_t first = model.spring_b.size();
+    for (auto k = bucket_start[a]; k < bucket_start[a + 1]; ++k) {
+      const Use& use = uses[static_cast<std::size_t>(k)];
+      std::int32_t& slot = slot_of[static_cast<std::size_t>(use.b)];
+      if (slot < static_cast<std::int32_t>(first)) {
+        slot = static_cast<std::int32_t>(model.spring_b.size());
+        model.spring_b.push_back(use.b);
+        volume_sum.push_back(0.0);
+      }
+      volume_sum[static_cast<std::size_t>(slot)] += use.volume;
+    }
+    for (std::size_t i = first + 1; i < model.spring_b.size(); ++i)  // insertion sort by b
+      for (std::size_t j = i; j > first && model.spring_b[j - 1] > model.spring_b[j]; --j) {
+        std::swap(model.spring_b[j - 1], model.spring_b[j]);
+        std::swap(volume_sum[j - 1], volume_sum[j]);
+      }
+    model.spring_a.resize(model.spring_b.size(), static_cast<std::int32_t>(a));
+  }
+
+  const std::size_t m = model.spring_b.size();
+  for (auto* v : {&model.rest_length, &model.stiffness, &model.damping}) v->resize(m);
+  for (std::size_t s = 0; s < m; ++s) {
+    const Vec3& pa = model.rest_position[static_cast<std::size_t>(model.spring_a[s])];
+    const Vec3& pb = model.rest_position[static_cast<std::size_t>(model.spring_b[s])];
+    const double length = (pb - pa).norm();
+    const double k = material.youngs_modulus * volume_sum[s] / (length * length);
+    model.rest_length[s] = length;
+    model.stiffness[s] = k;
+    model.damping[s] = material.stiffness_damping * k;
+  }
+}
+
 }  // namespace
 
 std::size_t SpringModel::num_fixed() const {
@@ -116,41 +182,14 @@ SpringModel build_spring_model(std::span<const Tet> tets, std::span<const Vec3> 
   const std::size_t n = model.particle_vertex.size();
   model.mass.assign(n, 0.0);
 
-  // Each tet edge once per tet, with that tet's volume: sort and merge.
-  struct EdgeUse {
-    std::int32_t a, b;
-    double volume;
-  };
-  std::vector<EdgeUse> uses;
-  uses.reserve(6 * tets.size());
   std::vector<double> volumes(tets.size());
   for (std::size_t t = 0; t < tets.size(); ++t) {
     const auto& p = local[t];
-    const double vol = engine::signed_volume(model.rest_position[p[0]], model.rest_position[p[1]],
-                                             model.rest_position[p[2]], model.rest_position[p[3]]);
-    volumes[t] = vol;
-    for (int k = 0; k < 4; ++k) model.mass[p[k]] += 0.25 * material.density * vol;
-    for (const auto& e : engine::kTetEdges) {
-      const auto a = p[e[0]], b = p[e[1]];
-      uses.push_back({std::min(a, b), std::max(a, b), vol});
-    }
+    volumes[t] = engine::signed_volume(model.rest_position[p[0]], model.rest_position[p[1]],
+                                       model.rest_position[p[2]], model.rest_position[p[3]]);
+    for (int k = 0; k < 4; ++k) model.mass[p[k]] += 0.25 * material.density * volumes[t];
   }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return x.a < y.a || (x.a == y.a && x.b < y.b);
-  });
-  for (std::size_t i = 0; i < uses.size();) {
-    double volume_sum = 0;
-    std::size_t j = i;
-    for (; j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b; ++j) volume_sum += uses[j].volume;
-    const double length = (model.rest_position[uses[i].b] - model.rest_position[uses[i].a]).norm();
-    const double k = material.youngs_modulus * volume_sum / (length * length);
-    model.spring_a.push_back(uses[i].a);
-    model.spring_b.push_back(uses[i].b);
-    model.rest_length.push_back(length);
-    model.stiffness.push_back(k);
-    model.damping.push_back(material.stiffness_damping * k);
-    i = j;
-  }
+  add_springs(local, volumes, material, model);
 
   model.inv_mass.resize(n);
   for (std::size_t i = 0; i < n; ++i)

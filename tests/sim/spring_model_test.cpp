@@ -2,8 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
+#include <random>
+#include <utility>
+
 #include "engine/mesh_loader.h"
 #include "engine/tet_adjacency.h"
+#include "engine/tet_geometry.h"
 #include "sim/fixed_region.h"
 #include "tests/test_paths.h"
 
@@ -41,6 +47,43 @@ TEST(SpringModel, SpringsAreSortedByFirstThenSecondParticle) {
     EXPECT_TRUE(model.spring_a[s - 1] < model.spring_a[s] ||
                 (model.spring_a[s - 1] == model.spring_a[s] && model.spring_b[s - 1] < model.spring_b[s]))
         << "spring " << s;
+}
+
+// Against a plain reference on the real liver and on random subsets of its
+// tets (as a frontier uses some of the MT's vertices): one spring per
+// distinct edge, and its stiffness E * (sum of its tets' volumes) / |e|^2
+// with the volumes summed in tet order, bit for bit.
+TEST(SpringModel, SpringsMatchAReferenceOnTheLiverAndItsSubsets) {
+  const engine::TetMesh mesh = engine::load_mesh(test::shared_mesh("liver.msh"), {}).mesh;
+  MaterialDef material;
+  material.youngs_modulus = 4321;
+  std::mt19937 rng(17);
+  for (const double keep : {1.0, 0.6, 0.15}) {
+    std::bernoulli_distribution kept(keep);
+    std::vector<engine::Tet> tets;
+    for (const engine::Tet& t : mesh.tets)
+      if (kept(rng)) tets.push_back(t);
+    const SpringModel model = build_spring_model(tets, mesh.positions, material);
+    ASSERT_TRUE(model.validate().ok()) << keep;
+
+    std::map<std::pair<VertId, VertId>, double> volume_of;  // by MT vertex ids, summed in tet order
+    for (const engine::Tet& t : tets) {
+      const double vol = engine::signed_volume(mesh.position(t[0]), mesh.position(t[1]), mesh.position(t[2]),
+                                               mesh.position(t[3]));
+      for (const auto& e : engine::kTetEdges) volume_of[std::minmax(t[e[0]], t[e[1]])] += vol;
+    }
+    ASSERT_EQ(model.num_springs(), volume_of.size()) << keep;
+    for (std::size_t s = 0; s < model.num_springs(); ++s) {
+      const VertId a = model.particle_vertex[static_cast<std::size_t>(model.spring_a[s])];
+      const VertId b = model.particle_vertex[static_cast<std::size_t>(model.spring_b[s])];
+      const auto it = volume_of.find(std::minmax(a, b));
+      ASSERT_NE(it, volume_of.end()) << "spring " << s;
+      const double l = (mesh.position(a) - mesh.position(b)).norm();
+      EXPECT_EQ(model.rest_length[s], l) << s;
+      EXPECT_EQ(model.stiffness[s], material.youngs_modulus * it->second / (l * l)) << s;
+      volume_of.erase(it);  // each edge once
+    }
+  }
 }
 
 TEST(SpringModel, VanGelderStiffnessOfOneTet) {
