@@ -109,8 +109,6 @@ Sample sample(const engine::Mt& mt, const engine::TetBvh& bvh, const Deformation
 
 }  // namespace
 
-bool DeformationSnapshot::simulated(engine::TetId t) const { return std::binary_search(tets.begin(), tets.end(), t); }
-
 DeformationSnapshot take_snapshot(const engine::Mt& mt, const engine::Frontier& frontier, const SpringModel& model,
                                   const SpringState& state) {
   return take_snapshot(mt, frontier.tets(), model, state);
@@ -119,8 +117,8 @@ DeformationSnapshot take_snapshot(const engine::Mt& mt, const engine::Frontier& 
 DeformationSnapshot take_snapshot(const engine::Mt& mt, std::span<const engine::TetId> tets,
                                   const SpringModel& model, const SpringState& state) {
   DeformationSnapshot snap;
-  snap.tets.assign(tets.begin(), tets.end());
-  std::sort(snap.tets.begin(), snap.tets.end());
+  snap.simulated_tet.assign(mt.num_tets(), 0);
+  for (const engine::TetId t : tets) snap.simulated_tet[t.index()] = 1;
   snap.particle_of.assign(mt.num_vertices(), -1);
   for (std::size_t p = 0; p < model.num_particles(); ++p)
     snap.particle_of[model.particle_vertex[p].index()] = static_cast<std::int32_t>(p);

@@ -20,6 +20,7 @@
 // the change equal to the momentum before it, to round-off.
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <span>
@@ -44,7 +45,9 @@ struct VertexOrigin {
 using OriginLookup = std::function<std::optional<VertexOrigin>(VertId)>;
 
 struct DeformationSnapshot {
-  std::vector<engine::TetId> tets;        // simulated tets, sorted
+  // (n_mt_tets when taken) 1 for a simulated tet: a lookup per candidate
+  // tet, where a sorted list cost a sort of the frontier per change.
+  std::vector<std::uint8_t> simulated_tet;
   std::vector<std::int32_t> particle_of;  // (n_mt_vertices) particle index, -1 if not simulated
   std::vector<Vec3> x, v;                 // (n_particles) state of the old model
   Vec3 momentum = Vec3::Zero();           // sum m v before the change
@@ -54,7 +57,10 @@ struct DeformationSnapshot {
   static constexpr std::size_t kMaxCarried = 3;
   std::vector<std::vector<Vec3>> carried;
 
-  bool simulated(engine::TetId t) const;
+  // Tet t was simulated (false for a tet made after the snapshot).
+  bool simulated(engine::TetId t) const {
+    return t.index() < simulated_tet.size() && simulated_tet[t.index()] != 0;
+  }
 };
 
 // What the simulator holds now, taken before the MT or the frontier changes.
