@@ -25,6 +25,7 @@ TEST(BenchSim, ReportsEveryIntegratorAndTheReference) {
       EXPECT_GT(out[key][rate].get<double>(), 0.0) << key << " " << rate;
   }
   EXPECT_GT(out["mesh"]["springs"].get<int>(), out["mesh"]["vertices"].get<int>());
+  EXPECT_GT(out["model_build_ms"].get<double>(), 0.0);
   EXPECT_GT(out["symplectic_euler"]["vs_reference"].get<double>(), 0.0);
   for (const char* key : {"implicit_euler", "implicit_euler_loose"}) {
     const auto& implicit = out[key];
