@@ -117,8 +117,8 @@ DeformationSnapshot take_snapshot(const engine::Mt& mt, const engine::Frontier& 
 DeformationSnapshot take_snapshot(const engine::Mt& mt, std::span<const engine::TetId> tets,
                                   const SpringModel& model, const SpringState& state) {
   DeformationSnapshot snap;
-  snap.simulated_tet.assign(mt.num_tets(), 0);
-  for (const engine::TetId t : tets) snap.simulated_tet[t.index()] = 1;
+  snap.simulated_tets.grow(mt.num_tets());
+  for (const engine::TetId t : tets) snap.simulated_tets.insert(t);
   snap.particle_of.assign(mt.num_vertices(), -1);
   for (std::size_t p = 0; p < model.num_particles(); ++p)
     snap.particle_of[model.particle_vertex[p].index()] = static_cast<std::int32_t>(p);

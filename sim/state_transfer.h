@@ -20,7 +20,6 @@
 // the change equal to the momentum before it, to round-off.
 
 #include <array>
-#include <cstdint>
 #include <functional>
 #include <optional>
 #include <span>
@@ -28,6 +27,7 @@
 #include <vector>
 
 #include "engine/mt/frontier.h"
+#include "engine/mt/index_set.h"
 #include "engine/mt/mt.h"
 #include "engine/mt/tet_bvh.h"
 #include "sim/spring_model.h"
@@ -45,9 +45,9 @@ struct VertexOrigin {
 using OriginLookup = std::function<std::optional<VertexOrigin>(VertId)>;
 
 struct DeformationSnapshot {
-  // (n_mt_tets when taken) 1 for a simulated tet: a lookup per candidate
-  // tet, where a sorted list cost a sort of the frontier per change.
-  std::vector<std::uint8_t> simulated_tet;
+  // The simulated tets, over the MT's tets when taken: a lookup per
+  // candidate tet, where a sorted list cost a sort of the frontier per change.
+  engine::IndexSet<engine::TetId> simulated_tets;
   std::vector<std::int32_t> particle_of;  // (n_mt_vertices) particle index, -1 if not simulated
   std::vector<Vec3> x, v;                 // (n_particles) state of the old model
   Vec3 momentum = Vec3::Zero();           // sum m v before the change
@@ -58,9 +58,7 @@ struct DeformationSnapshot {
   std::vector<std::vector<Vec3>> carried;
 
   // Tet t was simulated (false for a tet made after the snapshot).
-  bool simulated(engine::TetId t) const {
-    return t.index() < simulated_tet.size() && simulated_tet[t.index()] != 0;
-  }
+  bool simulated(engine::TetId t) const { return simulated_tets.contains(t); }
 };
 
 // What the simulator holds now, taken before the MT or the frontier changes.
