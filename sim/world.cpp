@@ -109,7 +109,7 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
                                     ? cut::CutBudget::units(static_cast<std::size_t>(def_.cut_budget.amount))
                                     : cut::CutBudget::ms(def_.cut_budget.amount);
   auto result = cutter_.run(mt_, bvh_, frontier_, budget);
-  frontier_ = cut::map_frontier(mt_, frontier_, result.changes.fragment_splits);
+  cut::follow_cut(mt_, frontier_, result.changes);
   m.cut_tets = result.changes.replaced.size();
   if (result.pieces) pieces_ = result.pieces->count;
   if (!result.changes.replaced.empty() || !result.changes.made_vertices.empty()) {

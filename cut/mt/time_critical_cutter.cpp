@@ -139,4 +139,35 @@ Frontier map_frontier(const Mt& mt, const Frontier& frontier, std::span<const Fr
   return Frontier::from_fragments(mt, set);
 }
 
+void follow_cut(const Mt& mt, Frontier& frontier, const MtChangeReport& changes) {
+  if (changes.empty()) return;
+  // mark[f]: 1 f joins S here, 2 f is already listed in `births`.
+  std::vector<std::uint8_t> mark(mt.num_fragments(), 0);
+  std::vector<FragId> joined, births;
+  const auto add_birth = [&](FragId f) {
+    if (f.valid() && !(mark[f.index()] & 2)) {
+      mark[f.index()] |= 2;
+      births.push_back(f);
+    }
+  };
+  for (const FragmentSplit& s : changes.fragment_splits) {  // in order: a part may split again
+    const bool in_s = frontier.contains(s.old) || (mark[s.old.index()] & 1);
+    for (FragId p : s.parts) {
+      if (in_s && p != s.old && !(mark[p.index()] & 1)) {
+        mark[p.index()] |= 1;
+        joined.push_back(p);
+      }
+      add_birth(p);
+    }
+  }
+  std::vector<TetId> tets;
+  tets.reserve(changes.replaced.size() + changes.made_tets.size());
+  for (const TetReplacement& r : changes.replaced) tets.push_back(r.old);
+  for (TetId t : changes.made_tets) {
+    tets.push_back(t);
+    if (mt.alive(t)) add_birth(mt.birth(t));
+  }
+  frontier.follow_edit(mt, joined, tets, births);
+}
+
 }  // namespace mtcut::cut

@@ -16,7 +16,7 @@
 // the mapped S with the whole cut in it (all frontier tets the cut crosses
 // are created by visible fragments). The World's step after each run():
 //     report = cutter.run(mt, bvh, frontier, budget);
-//     frontier = map_frontier(mt, frontier, report.fragment_splits);
+//     follow_cut(mt, frontier, report);  // = map_frontier(mt, frontier, report.fragment_splits)
 //     carry state over the report (made vertices, replaced tets);
 //     if (!cutter.frozen()) move the frontier (selective refinement).
 //
@@ -117,5 +117,10 @@ std::vector<FragId> map_fragment_set(std::span<const FragId> fragments, std::spa
 // The frontier of the mapped set, rebuilt over the MT as it is now (its
 // tets, vertices and visible fragments follow the split tets).
 Frontier map_frontier(const Mt& mt, const Frontier& frontier, std::span<const FragmentSplit> splits);
+// The same frontier as map_frontier(mt, frontier, changes.fragment_splits),
+// reached in place from what `changes` says the cut did (Frontier::follow_edit):
+// costs the tets the cut killed and made, not a pass over the MT. What the
+// World does after every run().
+void follow_cut(const Mt& mt, Frontier& frontier, const MtChangeReport& changes);
 
 }  // namespace mtcut::cut

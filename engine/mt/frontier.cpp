@@ -56,18 +56,50 @@ void Frontier::sync(const Mt& mt) {
   frag_uses_.resize(std::max(frag_uses_.size(), mt.num_fragments()), 0);
 }
 
-void Frontier::add_tet(const Mt& mt, TetId t) {
+void Frontier::follow_edit(const Mt& mt, std::span<const FragId> joined, std::span<const TetId> changed_tets,
+                           std::span<const FragId> births) {
+  sync(mt);
+  for (FragId f : joined)
+    if (!in_set_.contains(f)) in_set_.insert(f);
+  for (TetId t : changed_tets) {
+    const bool wanted = mt.alive(t) && in_set_.contains(mt.birth(t)) &&
+                        !(mt.death(t).valid() && in_set_.contains(mt.death(t)));
+    if (wanted && !tets_.contains(t))
+      add_mesh_tet(mt, t);
+    else if (!wanted && tets_.contains(t))
+      remove_mesh_tet(mt, t);
+  }
+  for (FragId f : births) {
+    if (!f.valid()) continue;
+    std::int32_t uses = 0;
+    for (TetId t : mt.created(f)) uses += tets_.contains(t) ? 1 : 0;
+    frag_uses_[f.index()] = uses;
+    if (uses > 0 && !visible_.contains(f)) visible_.insert(f);
+    if (uses == 0 && visible_.contains(f)) visible_.erase(f);
+  }
+  version_ = next_version();
+}
+
+void Frontier::add_mesh_tet(const Mt& mt, TetId t) {
   tets_.insert(t);
   for (VertId v : mt.tet(t))
     if (vert_uses_[v.index()]++ == 0) verts_.insert(v);
+}
+
+void Frontier::remove_mesh_tet(const Mt& mt, TetId t) {
+  tets_.erase(t);
+  for (VertId v : mt.tet(t))
+    if (--vert_uses_[v.index()] == 0) verts_.erase(v);
+}
+
+void Frontier::add_tet(const Mt& mt, TetId t) {
+  add_mesh_tet(mt, t);
   const FragId b = mt.birth(t);
   if (frag_uses_[b.index()]++ == 0) visible_.insert(b);
 }
 
 void Frontier::remove_tet(const Mt& mt, TetId t) {
-  tets_.erase(t);
-  for (VertId v : mt.tet(t))
-    if (--vert_uses_[v.index()] == 0) verts_.erase(v);
+  remove_mesh_tet(mt, t);
   const FragId b = mt.birth(t);
   if (--frag_uses_[b.index()] == 0) visible_.erase(b);
 }

@@ -65,6 +65,17 @@ class Frontier {
 
   // Grows the per-element arrays after the MT grew (new fragments are outside S).
   void sync(const Mt& mt);
+  // Follows an edit of the MT that kept every fragment's region (a cut:
+  // tets replaced by pieces, fragments split into parts) without a pass over
+  // the mesh: `joined` enter S (parts of members); `changed_tets` are the
+  // tets killed or made by the edit, each in the mesh afterwards when alive,
+  // born in S and not replaced in S; `births` holds every fragment whose
+  // created tets changed (where tets were killed, made or moved from or to),
+  // recounted for the visible set. Other tets keep their membership, so the
+  // result is from_fragments() of the new S. Costs the edit plus the
+  // created tets of `births`.
+  void follow_edit(const Mt& mt, std::span<const FragId> joined, std::span<const TetId> changed_tets,
+                   std::span<const FragId> births);
   // Changed by every refine / coarsen to a value no other frontier state has:
   // selective refinement checks it.
   std::uint64_t version() const { return version_; }
@@ -73,6 +84,9 @@ class Frontier {
  private:
   void add_tet(const Mt& mt, TetId t);
   void remove_tet(const Mt& mt, TetId t);
+  // The mesh's tets and vertices only (follow_edit recounts the visible set).
+  void add_mesh_tet(const Mt& mt, TetId t);
+  void remove_mesh_tet(const Mt& mt, TetId t);
 
   IndexSet<FragId> in_set_;              // S
   IndexSet<TetId> tets_;                 // the mesh

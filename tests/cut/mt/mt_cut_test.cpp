@@ -7,6 +7,7 @@
 
 #include "cut/mt/mt_cut_workspace.h"
 #include "cut/mt/mt_pieces.h"
+#include "cut/mt/time_critical_cutter.h"
 #include "cut/stroke_sweep.h"
 #include "tests/cut/mt/mt_cut_test_util.h"
 
@@ -58,6 +59,9 @@ void run_sequence(const std::string& name, int cuts, std::uint64_t seed) {
   std::vector<double> slack;
   cut::SplitTable table;
   std::size_t split = 0, whole = 0;
+  // A random frontier followed in place across the cuts, as the World does.
+  std::mt19937_64 frontier_rng(seed + 1000);
+  Frontier followed = random_frontier(mt, frontier_rng);
   for (int i = 0; i < cuts; ++i) {
     const bool complete = i % 5 == 4;
     polygons.push_back(random_polygon(box, rng, complete));
@@ -81,6 +85,11 @@ void run_sequence(const std::string& name, int cuts, std::uint64_t seed) {
         if (m.source.parents[k].valid()) rest += m.source.weights[k] * mt.position(m.source.parents[k]);
       EXPECT_EQ(rest, mt.position(m.id));
     }
+    const Frontier rebuilt = cut::map_frontier(mt, followed, r.fragment_splits);
+    cut::follow_cut(mt, followed, r);
+    EXPECT_EQ(frontier_difference(followed, rebuilt), "") << name << " cut " << i;
+    const auto fr = engine::validate_frontier(mt, followed);
+    EXPECT_TRUE(fr.ok()) << name << " cut " << i << ": " << fr.summary();
     check_after_cut(mt, polygons, slack, volume, rng, name + " cut " + std::to_string(i));
     if (::testing::Test::HasFatalFailure()) return;
   }

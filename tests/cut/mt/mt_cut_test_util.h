@@ -92,6 +92,25 @@ inline Frontier random_frontier(const Mt& mt, std::mt19937_64& rng) {
 }
 
 // Distance from a point of the polygon's plane to its outline.
+// Where two frontiers of one MT differ (set, mesh tets, vertices, visible
+// fragments, compared as sets); empty when they agree.
+inline std::string frontier_difference(const Frontier& a, const Frontier& b) {
+  const auto same = [](auto x, auto y) {
+    std::vector<std::int32_t> u, v;
+    for (auto h : x) u.push_back(h.value);
+    for (auto h : y) v.push_back(h.value);
+    std::sort(u.begin(), u.end());
+    std::sort(v.begin(), v.end());
+    return u == v;
+  };
+  std::string out;
+  if (!same(a.fragments(), b.fragments())) out += " fragments";
+  if (!same(a.tets(), b.tets())) out += " tets";
+  if (!same(a.vertices(), b.vertices())) out += " vertices";
+  if (!same(a.visible_fragments(), b.visible_fragments())) out += " visible";
+  return out;
+}
+
 inline double distance_to_outline(const CutPolygon& polygon, const Vec3& x) {
   double best = std::numeric_limits<double>::infinity();
   const auto& c = polygon.corners();

@@ -11,9 +11,10 @@ using cut::CutBudget;
 using cut::TimeCriticalCutter;
 
 // Runs `polygons` through a cutter with `budget` per call, checking after
-// every call: frozen while jobs are pending, the MT valid, the mapped
-// frontier valid and showing every cut whose visible jobs are done, and no
-// hidden job before a visible one of the same cut.
+// every call: frozen while jobs are pending, the MT valid, the frontier
+// followed in place (follow_cut) equal to the rebuilt one (map_frontier),
+// valid and showing every cut whose visible jobs are done, and no hidden job
+// before a visible one of the same cut.
 Mt run_cutter(const std::vector<CutPolygon>& polygons, const CutBudget& budget, bool visible_at_once,
               std::size_t* calls_out) {
   Mt mt = cut_test_mt("ellipsoid");
@@ -46,7 +47,10 @@ Mt run_cutter(const std::vector<CutPolygon>& polygons, const CutBudget& budget, 
       }
       hidden_seen = hidden_seen || !visible;
     }
-    frontier = cut::map_frontier(mt, frontier, result.changes.fragment_splits);
+    // The World's in-place update agrees with the rebuild of the mapped set.
+    const Frontier rebuilt = cut::map_frontier(mt, frontier, result.changes.fragment_splits);
+    cut::follow_cut(mt, frontier, result.changes);
+    EXPECT_EQ(frontier_difference(frontier, rebuilt), "") << "after call " << calls;
     const auto cr = cutter.validate(mt);
     EXPECT_TRUE(cr.ok()) << cr.summary();
     finished += result.cuts_finished;
