@@ -55,7 +55,7 @@ struct PieceFaces {
 struct SplitRecipe {
   CutCase kind = CutCase::kA;
   std::vector<std::array<Label, 4>> tets;
-  std::vector<Label> centre_of;  // 1:17: the centre is the centroid of these (unsided) points
+  std::vector<Label> centre_of;  // the centre, when used (1:17, some LUT splits): centroid of these (unsided) points
   std::vector<PieceFaces> faces;  // (tets) filled by make_recipe once the tets are oriented
 };
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cut/cut_trace.h"
+#include "cut/split_configs.h"
 #include "cut/split_realisation.h"
 #include "cut/split_table.h"
 #include "engine/tet_geometry.h"
@@ -19,50 +20,8 @@ namespace mtcut::cut::test {
 
 using engine::Vec3;
 
-// Whether a face of `c` is split into a triangle and a quad, whose diagonal
-// depends on the id order: the only use the splits make of the order.
-inline bool has_quad(const TetConfig& c) {
-  for (const auto& f : engine::kTetFaces) {
-    int active = 0;
-    for (int j = 0; j < 3; ++j) active += c.edge_active(edge_between(f[j], f[(j + 1) % 3]));
-    if (active == 2) return true;
-  }
-  return false;
-}
-
-// Every configuration that is cut: vertex states, coverage of the
-// straddling edges, and `orders` of the 24 id orders (all when 24) where
-// the order matters (has_quad), one otherwise.
-inline std::vector<TetConfig> all_cut_configs(int orders = 24) {
-  std::vector<std::array<std::uint8_t, 4>> ranks;
-  std::array<std::uint8_t, 4> r = {0, 1, 2, 3};
-  do ranks.push_back(r);
-  while (std::next_permutation(r.begin(), r.end()));
-  std::vector<TetConfig> out;
-  for (int states = 0; states < 256; ++states) {
-    TetConfig c;
-    for (int i = 0; i < 4; ++i) c.vertex[i] = static_cast<VertexState>(states >> (2 * i) & 3);
-    std::vector<int> straddling;
-    for (int k = 0; k < 6; ++k)
-      if (c.straddles(k)) straddling.push_back(k);
-    for (int mask = 0; mask < (1 << straddling.size()); ++mask) {
-      c.covered = 0;
-      for (std::size_t j = 0; j < straddling.size(); ++j)
-        if (mask >> j & 1) c.covered |= static_cast<std::uint8_t>(1u << straddling[j]);
-      if (!c.is_cut()) continue;
-      // A bent cut surface is implied by a vertex on the cut; without one it
-      // is its own variant (cut points moved off the plane).
-      const bool on = std::any_of(c.vertex.begin(), c.vertex.end(), is_on);
-      for (int bent = on ? 1 : 0; bent < 2; ++bent)
-        for (int o = 0; o < (has_quad(c) ? orders : 1); ++o) {
-          c.rank = ranks[static_cast<std::size_t>(o * 24 / orders)];
-          c.bent = bent == 1;
-          out.push_back(c);
-        }
-    }
-  }
-  return out;
-}
+// The enumeration lives in the library (split_configs.h).
+using cut::all_cut_configs;
 
 inline std::array<Vec3, kLabelCount> random_realisation(const TetConfig& c, const CutTrace& tr, std::mt19937_64& rng,
                                                         bool planar) {

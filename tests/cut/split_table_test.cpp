@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
+#include "cut/baked_lut.h"
+#include "cut/split_configs.h"
 #include "cut/split_lut.h"
 #include "tests/cut/recipe_checks.h"
 
@@ -106,6 +109,59 @@ TEST(SplitTable, CachesOneRecipePerConfiguration) {
   SplitTable other;
   EXPECT_EQ(&other.recipe(c), &a);
   EXPECT_EQ(a.tets.size(), 4u);
+}
+
+TEST(SplitTable, BakedLutHoldsWhatTheRuleMakesForEveryConfiguration) {
+  // The table compiled into mtcut (baked when it was built) has one entry per
+  // configuration, the rule's recipe exactly; the table serves it, faces and all.
+  const BakedLut lut = baked_lut();
+  SplitTable table;
+  std::size_t configs = 0;
+  for (const TetConfig& c : all_cut_configs()) {
+    SCOPED_TRACE(describe(c));
+    ++configs;
+    const SplitRecipe made = make_recipe(c, SplitScheme::kLut);
+    const auto it = std::lower_bound(lut.entries.begin(), lut.entries.end(), table_key(c),
+                                     [](const BakedLutEntry& e, std::uint32_t k) { return e.key < k; });
+    ASSERT_TRUE(it != lut.entries.end() && it->key == table_key(c)) << "not baked";
+    EXPECT_EQ(static_cast<CutCase>(it->kind), made.kind);
+    const auto baked = lut.tets.subspan(it->first, it->count);
+    EXPECT_TRUE(std::equal(baked.begin(), baked.end(), made.tets.begin(), made.tets.end()));
+    const auto centre = lut.centres.subspan(it->centre_first, it->centre_count);
+    EXPECT_TRUE(std::equal(centre.begin(), centre.end(), made.centre_of.begin(), made.centre_of.end()));
+    const SplitRecipe& served = table.recipe(c);
+    EXPECT_EQ(served.kind, made.kind);
+    EXPECT_EQ(served.tets, made.tets);
+    EXPECT_EQ(served.centre_of, made.centre_of);
+    ASSERT_EQ(served.faces.size(), made.faces.size());
+    for (std::size_t t = 0; t < made.faces.size(); ++t) EXPECT_EQ(served.faces[t].mask_for, made.faces[t].mask_for);
+  }
+  EXPECT_EQ(lut.entries.size(), configs);
+}
+
+TEST(SplitTable, IdOrderChangesTheLutOnlyWhereAFaceHasAQuad) {
+  // What lets the table key such configurations by the identity order.
+  std::vector<std::array<std::uint8_t, 4>> ranks;
+  std::array<std::uint8_t, 4> r = {0, 1, 2, 3};
+  do ranks.push_back(r);
+  while (std::next_permutation(r.begin(), r.end()));
+  SplitTable table;
+  std::size_t checked = 0;
+  for (TetConfig c : all_cut_configs(1)) {
+    if (order_matters(c)) continue;
+    const SplitRecipe identity = make_recipe(c, SplitScheme::kLut);
+    const SplitRecipe* served = &table.recipe(c);
+    for (const auto& rank : ranks) {
+      c.rank = rank;
+      SCOPED_TRACE(describe(c));
+      const SplitRecipe ordered = make_recipe(c, SplitScheme::kLut);
+      EXPECT_EQ(ordered.tets, identity.tets);
+      EXPECT_EQ(ordered.centre_of, identity.centre_of);
+      EXPECT_EQ(&table.recipe(c), served);
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 100u);
 }
 
 TEST(SplitTable, SchemeNamesRoundTrip) {
