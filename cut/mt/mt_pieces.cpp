@@ -29,12 +29,18 @@ struct UnionFind {
 }  // namespace
 
 MtPieces find_pieces(const Mt& mt) {
-  // Nodes: the finest tets (sorted), then one per fragment.
-  std::vector<TetId> finest(mt.created(mt.root()).begin(), mt.created(mt.root()).end());
-  std::sort(finest.begin(), finest.end());
-  const std::size_t n_fine = finest.size();
+  // Nodes: the finest tets in ascending id order (marked, then numbered in
+  // one pass over the ids: no sort), then one per fragment.
   std::vector<std::int32_t> fine_index(mt.num_tets(), -1);
-  for (std::size_t i = 0; i < n_fine; ++i) fine_index[finest[i].index()] = static_cast<std::int32_t>(i);
+  for (TetId t : mt.created(mt.root())) fine_index[t.index()] = 0;
+  std::vector<TetId> finest;
+  finest.reserve(mt.created(mt.root()).size());
+  for (std::size_t i = 0; i < fine_index.size(); ++i)
+    if (fine_index[i] == 0) {
+      fine_index[i] = static_cast<std::int32_t>(finest.size());
+      finest.emplace_back(i);
+    }
+  const std::size_t n_fine = finest.size();
   UnionFind uf(n_fine + mt.num_fragments());
   const auto frag_node = [&](FragId f) { return static_cast<std::int32_t>(n_fine + f.index()); };
   const auto tet_node = [&](TetId t) {
