@@ -68,11 +68,8 @@ MtPieces find_pieces(const Mt& mt) {
     if (piece_of_root[r] < 0) {
       piece_of_root[r] = static_cast<std::int32_t>(pieces.count++);
       pieces.finest_tets.push_back(0);
-      pieces.volume.push_back(0);
     }
-    const auto p = static_cast<std::size_t>(piece_of_root[r]);
-    ++pieces.finest_tets[p];
-    pieces.volume[p] += mt.volume(finest[i]);
+    ++pieces.finest_tets[static_cast<std::size_t>(piece_of_root[r])];
   }
   pieces.fragments.resize(pieces.count);
   pieces.fragment_piece.assign(mt.num_fragments(), -1);
@@ -87,6 +84,15 @@ MtPieces find_pieces(const Mt& mt) {
     if (mt.alive(TetId(i)))
       pieces.tet_piece[i] = piece_of_root[static_cast<std::size_t>(uf.find(tet_node(TetId(i))))];
   return pieces;
+}
+
+std::vector<double> piece_volumes(const Mt& mt, const MtPieces& pieces) {
+  std::vector<double> volume(pieces.count, 0.0);
+  for (TetId t : mt.created(mt.root())) {
+    const std::int32_t p = pieces.tet_piece[t.index()];
+    if (p >= 0) volume[static_cast<std::size_t>(p)] += mt.volume(t);
+  }
+  return volume;
 }
 
 engine::ValidationReport validate_pieces(const Mt& mt, const MtPieces& pieces) {

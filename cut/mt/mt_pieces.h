@@ -38,11 +38,15 @@ struct MtPieces {
   std::vector<std::int32_t> tet_piece;          // (n_tets) piece of each live tet; -1 dead
   std::vector<std::vector<FragId>> fragments;   // (count) each piece's fragments, ascending (root, drain excluded)
   std::vector<std::size_t> finest_tets;         // (count) tets of the finest mesh in each piece
-  std::vector<double> volume;                   // (count) volume of each piece's finest mesh
 };
 
 // Numbered in the order of their first finest tet (ascending tet ids).
 MtPieces find_pieces(const Mt& mt);
+
+// (pieces.count) the volume of each piece's finest mesh. Apart from
+// find_pieces, which the cutter runs after every cut: the volumes were 40%
+// of it, and the World needs only the labels.
+std::vector<double> piece_volumes(const Mt& mt, const MtPieces& pieces);
 
 // Every arc (live tet) within one piece, root and drain apart; counts agree.
 engine::ValidationReport validate_pieces(const Mt& mt, const MtPieces& pieces);

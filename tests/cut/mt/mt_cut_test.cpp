@@ -29,7 +29,7 @@ void check_after_cut(const Mt& mt, const std::vector<CutPolygon>& cuts, const st
   const auto piece_report = cut::validate_pieces(mt, pieces);
   ASSERT_TRUE(piece_report.ok()) << where << ": " << piece_report.summary();
   double pieces_volume = 0;
-  for (double v : pieces.volume) pieces_volume += v;
+  for (double v : cut::piece_volumes(mt, pieces)) pieces_volume += v;
   EXPECT_NEAR(pieces_volume, mt.fine_volume(), 1e-9 * mt.fine_volume()) << where;
   // validate() checked the finest and coarsest frontiers; two random ones too.
   for (int i = 0; i < 4; ++i) {
@@ -178,12 +178,13 @@ TEST(MtCut, SeparatingCutGivesTwoValidPieces) {
     const auto pieces = cut::find_pieces(mt);
     ASSERT_TRUE(cut::validate_pieces(mt, pieces).ok()) << name;
     ASSERT_EQ(pieces.count, 2u) << name;
+    const std::vector<double> volumes = cut::piece_volumes(mt, pieces);
     double sum = 0;
     for (std::size_t p = 0; p < pieces.count; ++p) {
       const Mt piece = cut::extract_piece_mt(mt, pieces, p);
       const auto pr = piece.validate();
       EXPECT_TRUE(pr.ok()) << name << " piece " << p << ": " << pr.summary();
-      EXPECT_NEAR(piece.fine_volume(), pieces.volume[p], 1e-12 * mt.fine_volume());
+      EXPECT_NEAR(piece.fine_volume(), volumes[p], 1e-12 * mt.fine_volume());
       EXPECT_EQ(piece.num_fragments(), pieces.fragments[p].size() + 2);
       sum += piece.fine_volume();
       EXPECT_GT(piece.fine_volume(), 0.05 * mt.fine_volume());
