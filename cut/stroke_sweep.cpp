@@ -26,6 +26,16 @@ Plane fit_plane(const std::vector<Vec3>& points) {
   return {c, u, n.cross(u), n};
 }
 
+// The same plane from running sums (PlaneMoments), without the points.
+Plane moments_plane(const Vec3& shift, const Vec3& sum, const Eigen::Matrix3d& sum_outer, std::size_t n) {
+  const Vec3 mean = sum / static_cast<double>(n);
+  const Eigen::Matrix3d cov = sum_outer - static_cast<double>(n) * mean * mean.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);  // eigenvalues ascending
+  const Vec3 normal = eig.eigenvectors().col(0).normalized();
+  const Vec3 u = eig.eigenvectors().col(2).normalized();
+  return {shift + mean, u, normal.cross(u), normal};
+}
+
 double diameter(const std::vector<Vec3>& points) {
   Vec3 lo = points.front(), hi = points.front();
   for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
@@ -91,6 +101,22 @@ struct Hull {
   double area = 0, diameter = 0, off_plane = 0;  // off_plane: largest distance of a point to the plane
 };
 
+// The hull of `points` projected on `plane` (off_plane and diameter left 0).
+Hull hull_on(const Plane& plane, const std::vector<Vec3>& points, double diameter) {
+  Hull h;
+  h.plane = plane;
+  h.diameter = diameter;
+  std::vector<Eigen::Vector2d> flat;
+  flat.reserve(points.size());
+  for (const Vec3& p : points) {
+    const Vec3 d = p - plane.origin;
+    flat.emplace_back(d.dot(plane.u), d.dot(plane.v));
+  }
+  h.corners = convex_hull(std::move(flat), 1e-12 * diameter * diameter);
+  h.area = h.corners.size() >= 3 ? polygon_area(h.corners) : 0.0;
+  return h;
+}
+
 Hull hull_of(const std::vector<Vec3>& points) {
   Hull h;
   h.plane = fit_plane(points);
@@ -113,13 +139,42 @@ double sweep_area(const Vec3& a0, const Vec3& b0, const Vec3& a1, const Vec3& b1
   return 0.5 * ((b0 - a0).cross(b1 - a0).norm() + (b1 - a0).cross(a1 - a0).norm());
 }
 
-bool StrokeSweep::extends(const Blade& next) const {
+void StrokeSweep::PartSums::add(const Vec3& p) {
+  if (n == 0) {
+    shift = p;
+    lo = hi = p;
+  }
+  const Vec3 q = p - shift;
+  sum += q;
+  sum_outer += q * q.transpose();
+  lo = lo.cwiseMin(p);
+  hi = hi.cwiseMax(p);
+  ++n;
+}
+
+bool StrokeSweep::extends(const Blade& next, std::vector<Vec3>& corners) const {
+  corners = hull_corners_;
+  corners.push_back(next.first);
+  corners.push_back(next.second);
   if (blades_.size() < 2) return true;  // two poses always span one sweep
-  std::vector<Vec3> points = corner_points(blades_);
-  points.push_back(next.first);
-  points.push_back(next.second);
-  const Hull h = hull_of(points);
-  if (h.off_plane > def_.plane_tolerance * h.diameter) return false;
+  PartSums sums = sums_;
+  sums.add(next.first);
+  sums.add(next.second);
+  const Plane plane = moments_plane(sums.shift, sums.sum, sums.sum_outer, sums.n);
+  const double diameter = (sums.hi - sums.lo).norm();
+  // Every pose, the new one too, near the plane.
+  double off_plane = 0;
+  const auto off = [&](const Vec3& p) { off_plane = std::max(off_plane, std::abs((p - plane.origin).dot(plane.n))); };
+  for (const Blade& b : blades_) off(b.first), off(b.second);
+  off(next.first), off(next.second);
+  if (off_plane > def_.plane_tolerance * diameter) return false;
+  // The hull of all poses is the hull of the last one's corners and the new
+  // pose: exactly so while the plane stays; as it turns a little, a pose once
+  // inside may end up a sliver outside, which only the area test here skips
+  // (close_part() takes the hull of every pose).
+  const Hull h = hull_on(plane, corners, diameter);
+  corners.clear();
+  for (const auto& c : h.corners) corners.push_back(plane.origin + c.x() * plane.u + c.y() * plane.v);
   const Blade& last = blades_.back();
   const double swept = swept_area_ + sweep_area(last.first, last.second, next.first, next.second);
   return h.area <= (1 + def_.hull_excess) * swept;
@@ -128,26 +183,36 @@ bool StrokeSweep::extends(const Blade& next) const {
 std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
   std::vector<CutPolygon> out;
   const Blade next(base, tip);
-  if (!extends(next)) {
+  std::vector<Vec3> corners;
+  if (!extends(next, corners)) {
     // The next part starts here, not at the last pose: parts never share a
     // blade segment (see the header), at the price of the one sweep between
     // them left uncut.
     out = close_part();
-    blades_.clear();
-    swept_area_ = 0;
+    clear_part();
+    corners = {base, tip};
   }
   if (!blades_.empty()) {
     const Blade& last = blades_.back();
     swept_area_ += sweep_area(last.first, last.second, next.first, next.second);
   }
   blades_.push_back(next);
+  sums_.add(base);
+  sums_.add(tip);
+  hull_corners_ = std::move(corners);
   return out;
+}
+
+void StrokeSweep::clear_part() {
+  blades_.clear();
+  swept_area_ = 0;
+  sums_ = {};
+  hull_corners_.clear();
 }
 
 std::vector<CutPolygon> StrokeSweep::finish() {
   std::vector<CutPolygon> out = close_part();
-  blades_.clear();
-  swept_area_ = 0;
+  clear_part();
   return out;
 }
 

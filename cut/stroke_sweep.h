@@ -26,6 +26,8 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "cut/cut_polygon.h"
 
 namespace mtcut::cut {
@@ -54,11 +56,29 @@ class StrokeSweep {
   // nothing when it sweeps no area.
   std::vector<CutPolygon> close_part();
   // Would the part stay one planar convex polygon with `next` added?
-  bool extends(const Blade& next) const;
+  // `corners` receives the hull corners it would then have.
+  bool extends(const Blade& next, std::vector<Vec3>& corners) const;
+  void clear_part();
+
+  // Running sums over the part's blade ends (shifted by the first, against
+  // cancellation): its best plane and its box in O(1) per pose.
+  struct PartSums {
+    Vec3 shift = Vec3::Zero(), sum = Vec3::Zero(), lo = Vec3::Zero(), hi = Vec3::Zero();
+    Eigen::Matrix3d sum_outer = Eigen::Matrix3d::Zero();
+    std::size_t n = 0;
+    void add(const Vec3& p);
+  };
 
   StrokeSweepDef def_;
   std::vector<Blade> blades_;  // the poses of the current part
   double swept_area_ = 0;      // sum of the areas its consecutive sweeps cover
+  // Why these: a haptic stylus gives a pose per millisecond, so a part can
+  // hold thousands; fitting and hulling all of them at every pose made a
+  // stroke quadratic (0.15 ms per pose after 2,000). The plane comes from
+  // the sums, the hull from its last corners and the new pose; only the
+  // distance check and close_part() visit every pose.
+  PartSums sums_;
+  std::vector<Vec3> hull_corners_;  // the part's hull corners (its poses until a hull is taken)
 };
 
 // Area of the quad a blade sweeps between two poses (two triangles).
