@@ -14,26 +14,28 @@ struct Plane {
   Vec3 origin, u, v, n;
 };
 
+// The plane through `centroid` whose normal is the direction of least
+// spread of `cov` (eigenvalues ascending).
+Plane principal_plane(const Vec3& centroid, const Eigen::Matrix3d& cov) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  const Vec3 n = eig.eigenvectors().col(0).normalized();
+  const Vec3 u = eig.eigenvectors().col(2).normalized();
+  return {centroid, u, n.cross(u), n};
+}
+
 Plane fit_plane(const std::vector<Vec3>& points) {
   Vec3 c = Vec3::Zero();
   for (const Vec3& p : points) c += p;
   c /= static_cast<double>(points.size());
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   for (const Vec3& p : points) cov += (p - c) * (p - c).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);  // eigenvalues ascending
-  const Vec3 n = eig.eigenvectors().col(0).normalized();
-  const Vec3 u = eig.eigenvectors().col(2).normalized();
-  return {c, u, n.cross(u), n};
+  return principal_plane(c, cov);
 }
 
-// The same plane from running sums (PlaneMoments), without the points.
+// The same plane from running sums (PartSums), without the points.
 Plane moments_plane(const Vec3& shift, const Vec3& sum, const Eigen::Matrix3d& sum_outer, std::size_t n) {
   const Vec3 mean = sum / static_cast<double>(n);
-  const Eigen::Matrix3d cov = sum_outer - static_cast<double>(n) * mean * mean.transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);  // eigenvalues ascending
-  const Vec3 normal = eig.eigenvectors().col(0).normalized();
-  const Vec3 u = eig.eigenvectors().col(2).normalized();
-  return {shift + mean, u, normal.cross(u), normal};
+  return principal_plane(shift + mean, sum_outer - static_cast<double>(n) * mean * mean.transpose());
 }
 
 double diameter(const std::vector<Vec3>& points) {
@@ -98,10 +100,11 @@ std::vector<Vec3> corner_points(const std::vector<std::pair<Vec3, Vec3>>& blades
 struct Hull {
   Plane plane;
   std::vector<Eigen::Vector2d> corners;
-  double area = 0, diameter = 0, off_plane = 0;  // off_plane: largest distance of a point to the plane
+  double area = 0, diameter = 0;
 };
 
-// The hull of `points` projected on `plane` (off_plane and diameter left 0).
+// The hull of `points` projected on `plane`; `diameter` sets the tolerance
+// for collinear corners.
 Hull hull_on(const Plane& plane, const std::vector<Vec3>& points, double diameter) {
   Hull h;
   h.plane = plane;
@@ -117,21 +120,8 @@ Hull hull_on(const Plane& plane, const std::vector<Vec3>& points, double diamete
   return h;
 }
 
-Hull hull_of(const std::vector<Vec3>& points) {
-  Hull h;
-  h.plane = fit_plane(points);
-  h.diameter = diameter(points);
-  std::vector<Eigen::Vector2d> flat;
-  flat.reserve(points.size());
-  for (const Vec3& p : points) {
-    const Vec3 d = p - h.plane.origin;
-    flat.emplace_back(d.dot(h.plane.u), d.dot(h.plane.v));
-    h.off_plane = std::max(h.off_plane, std::abs(d.dot(h.plane.n)));
-  }
-  h.corners = convex_hull(std::move(flat), 1e-12 * h.diameter * h.diameter);
-  h.area = h.corners.size() >= 3 ? polygon_area(h.corners) : 0.0;
-  return h;
-}
+// The hull of `points` on their best plane.
+Hull hull_of(const std::vector<Vec3>& points) { return hull_on(fit_plane(points), points, diameter(points)); }
 
 }  // namespace
 
