@@ -65,23 +65,33 @@ void add_springs(const std::vector<std::array<std::int32_t, 4>>& tets, const std
   volume_sum.reserve(uses.size() / 3);
   model.spring_b.reserve(uses.size() / 3);
   std::vector<std::int32_t> slot_of(n, -1);  // b's spring in the current bucket, if >= its first
+  std::vector<std::uint64_t> row;              // the bucket's springs as b << 32 | index in the bucket
+  std::vector<double> row_volume;
   for (std::size_t a = 0; a < n; ++a) {
     const std::size_t first = model.spring_b.size();
+    row.clear();
+    row_volume.clear();
     for (auto k = bucket_start[a]; k < bucket_start[a + 1]; ++k) {
       const Use& use = uses[static_cast<std::size_t>(k)];
       std::int32_t& slot = slot_of[static_cast<std::size_t>(use.b)];
       if (slot < static_cast<std::int32_t>(first)) {
-        slot = static_cast<std::int32_t>(model.spring_b.size());
-        model.spring_b.push_back(use.b);
-        volume_sum.push_back(0.0);
+        slot = static_cast<std::int32_t>(first + row.size());
+        row.push_back(static_cast<std::uint64_t>(use.b) << 32 | row.size());
+        row_volume.push_back(0.0);
       }
-      volume_sum[static_cast<std::size_t>(slot)] += use.volume;
+      row_volume[static_cast<std::size_t>(slot) - first] += use.volume;
     }
-    for (std::size_t i = first + 1; i < model.spring_b.size(); ++i)  // insertion sort by b
-      for (std::size_t j = i; j > first && model.spring_b[j - 1] > model.spring_b[j]; --j) {
-        std::swap(model.spring_b[j - 1], model.spring_b[j]);
-        std::swap(volume_sum[j - 1], volume_sum[j]);
-      }
+    // Insertion sort by b of one word per spring (a handful per particle).
+    for (std::size_t i = 1; i < row.size(); ++i) {
+      const std::uint64_t key = row[i];
+      std::size_t j = i;
+      for (; j > 0 && row[j - 1] > key; --j) row[j] = row[j - 1];
+      row[j] = key;
+    }
+    for (const std::uint64_t key : row) {
+      model.spring_b.push_back(static_cast<std::int32_t>(key >> 32));
+      volume_sum.push_back(row_volume[key & 0xffffffffu]);
+    }
     model.spring_a.resize(model.spring_b.size(), static_cast<std::int32_t>(a));
   }
 
