@@ -3,25 +3,49 @@
 #include <algorithm>
 #include <array>
 
-#include "cut/cut_trace.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {
 
-bool order_matters(const TetConfig& c) {
+namespace {
+
+// Key bits (TetConfig::key): the cut edges at 8..13, the order's Lehmer
+// code at 14..18 (0 for the identity order).
+constexpr int kActiveShift = 8, kOrderShift = 14;
+constexpr std::uint32_t kOrderBits = 31u << kOrderShift;
+
+constexpr int edge_index(int a, int b) {
+  for (int k = 0; k < 6; ++k)
+    if ((engine::kTetEdges[k][0] == a && engine::kTetEdges[k][1] == b) ||
+        (engine::kTetEdges[k][0] == b && engine::kTetEdges[k][1] == a))
+      return k;
+  return -1;
+}
+
+// Whether a set of cut edges (bit k: edge k) cuts two edges of some face.
+constexpr bool splits_a_face_into_a_quad(unsigned active) {
   for (const auto& f : engine::kTetFaces) {
-    int active = 0;
-    for (int j = 0; j < 3; ++j) active += c.edge_active(edge_between(f[j], f[(j + 1) % 3]));
-    if (active == 2) return true;
+    int n = 0;
+    for (int j = 0; j < 3; ++j) n += active >> edge_index(f[j], f[(j + 1) % 3]) & 1;
+    if (n == 2) return true;
   }
   return false;
 }
 
+// By cut-edge mask: the lookup runs for every tet a cut splits.
+constexpr std::array<bool, 64> kOrderMatters = [] {
+  std::array<bool, 64> table{};
+  for (unsigned m = 0; m < 64; ++m) table[m] = splits_a_face_into_a_quad(m);
+  return table;
+}();
+
+}  // namespace
+
+bool order_matters(const TetConfig& c) { return kOrderMatters[c.key() >> kActiveShift & 63]; }
+
 std::uint32_t table_key(const TetConfig& c) {
-  if (order_matters(c)) return c.key();
-  TetConfig identity = c;
-  identity.rank = {0, 1, 2, 3};
-  return identity.key();
+  const std::uint32_t key = c.key();
+  return kOrderMatters[key >> kActiveShift & 63] ? key : key & ~kOrderBits;
 }
 
 std::vector<TetConfig> all_cut_configs(int orders) {
