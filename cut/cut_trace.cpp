@@ -289,12 +289,6 @@ class Tracer {
 
 }  // namespace
 
-int edge_between(int a, int b) {
-  for (int k = 0; k < 6; ++k)
-    if ((kTetEdges[k][0] == a && kTetEdges[k][1] == b) || (kTetEdges[k][0] == b && kTetEdges[k][1] == a)) return k;
-  throw std::logic_error("edge_between: not an edge");
-}
-
 LabelSide label_side_in(const TetConfig& config, Label l) {
   if (label_kind(l) == LabelKind::kVertex) {
     const VertexState s = config.vertex[label_index(l)];

@@ -18,9 +18,11 @@
 //   - neither end cut: kept whole (the polygon may poke in; ignored).
 
 #include <array>
+#include <stdexcept>
 #include <vector>
 
 #include "cut/split_labels.h"
+#include "engine/tet_geometry.h"
 
 namespace mtcut::cut {
 
@@ -72,6 +74,13 @@ LabelSide label_side_in(const TetConfig& config, Label l);  // side of strict ve
 bool is_copied(const TetConfig& config, Label l);           // one copy per side (edge points, split vertices)
 bool on_cut_surface(const TetConfig& config, Label l);
 bool on_tet_face(Label l, int face);                        // lies on the face opposite local vertex `face`
-int edge_between(int a, int b);                             // local edge index of (a, b)
+// Local edge index of (a, b); constexpr for the tables built at compile time.
+constexpr int edge_between(int a, int b) {
+  for (int k = 0; k < 6; ++k)
+    if ((engine::kTetEdges[k][0] == a && engine::kTetEdges[k][1] == b) ||
+        (engine::kTetEdges[k][0] == b && engine::kTetEdges[k][1] == a))
+      return k;
+  throw std::logic_error("edge_between: not an edge");
+}
 
 }  // namespace mtcut::cut

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "cut/cut_trace.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {
@@ -14,19 +15,11 @@ namespace {
 constexpr int kActiveShift = 8, kOrderShift = 14;
 constexpr std::uint32_t kOrderBits = 31u << kOrderShift;
 
-constexpr int edge_index(int a, int b) {
-  for (int k = 0; k < 6; ++k)
-    if ((engine::kTetEdges[k][0] == a && engine::kTetEdges[k][1] == b) ||
-        (engine::kTetEdges[k][0] == b && engine::kTetEdges[k][1] == a))
-      return k;
-  return -1;
-}
-
 // Whether a set of cut edges (bit k: edge k) cuts two edges of some face.
 constexpr bool splits_a_face_into_a_quad(unsigned active) {
   for (const auto& f : engine::kTetFaces) {
     int n = 0;
-    for (int j = 0; j < 3; ++j) n += active >> edge_index(f[j], f[(j + 1) % 3]) & 1;
+    for (int j = 0; j < 3; ++j) n += active >> edge_between(f[j], f[(j + 1) % 3]) & 1;
     if (n == 2) return true;
   }
   return false;

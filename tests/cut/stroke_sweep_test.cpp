@@ -16,24 +16,32 @@ double area(const CutPolygon& p) {
   return a;
 }
 
+// Pose counts of one stroke: a frame's pose at 60 Hz, and a haptic stylus's
+// at 1 kHz (thousands per part, which the part's plane and hull follow
+// incrementally: stroke_sweep.h).
+constexpr int kPoseCounts[] = {60, 2000};
+
 TEST(StrokeSweep, StraightStrokeIsOnePolygonCoveringEverySweep) {
-  StrokeSweep stroke;
-  // A vertical blade drawn along y with rounding noise in x, as a keyframed
-  // path interpolated over 60 frames gives.
-  for (int f = 0; f <= 60; ++f) {
-    const double y = -0.06 + 0.12 * f / 60.0, noise = (f % 3 - 1) * 1e-17;
-    EXPECT_TRUE(stroke.add(Vec3(0.04 + noise, y, 0.06), Vec3(0.04, y, -0.045)).empty()) << "frame " << f;
-  }
-  EXPECT_TRUE(stroke.active());
-  const auto polygons = stroke.finish();
-  EXPECT_FALSE(stroke.active());
-  ASSERT_EQ(polygons.size(), 1u);
-  EXPECT_EQ(polygons[0].size(), 4u);
-  EXPECT_NEAR(area(polygons[0]), 0.12 * 0.105, 1e-12);
-  EXPECT_NEAR(std::abs(polygons[0].normal().x()), 1.0, 1e-12);
-  for (const Vec3& c : polygons[0].corners()) {
-    EXPECT_NEAR(c.x(), 0.04, 1e-12);
-    EXPECT_NEAR(std::abs(c.y()), 0.06, 1e-12);
+  for (int poses : kPoseCounts) {
+    SCOPED_TRACE(std::to_string(poses) + " poses");
+    StrokeSweep stroke;
+    // A vertical blade drawn along y with rounding noise in x, as a keyframed
+    // path interpolated over the poses gives.
+    for (int f = 0; f <= poses; ++f) {
+      const double y = -0.06 + 0.12 * f / poses, noise = (f % 3 - 1) * 1e-17;
+      ASSERT_TRUE(stroke.add(Vec3(0.04 + noise, y, 0.06), Vec3(0.04, y, -0.045)).empty()) << "pose " << f;
+    }
+    EXPECT_TRUE(stroke.active());
+    const auto polygons = stroke.finish();
+    EXPECT_FALSE(stroke.active());
+    ASSERT_EQ(polygons.size(), 1u);
+    EXPECT_EQ(polygons[0].size(), 4u);
+    EXPECT_NEAR(area(polygons[0]), 0.12 * 0.105, 1e-12);
+    EXPECT_NEAR(std::abs(polygons[0].normal().x()), 1.0, 1e-12);
+    for (const Vec3& c : polygons[0].corners()) {
+      EXPECT_NEAR(c.x(), 0.04, 1e-12);
+      EXPECT_NEAR(std::abs(c.y()), 0.06, 1e-12);
+    }
   }
 }
 
@@ -62,64 +70,39 @@ TEST(StrokeSweep, TurnEndsThePartAndTheNextStartsAtTheNewPose) {
 }
 
 TEST(StrokeSweep, CurvedStrokeInOnePlaneIsSplitWhereItStopsBeingConvex) {
-  StrokeSweep stroke;
-  // A short blade along a half circle in the plane z = 0: the hull of the
-  // whole arc would cut far more than the blade swept.
-  std::size_t parts = 0;
-  double cut_area = 0;
-  for (int f = 0; f <= 60; ++f) {
-    const double a = 3.14159 * f / 60;
-    const Vec3 dir(std::cos(a), std::sin(a), 0);
-    for (const auto& p : stroke.add(0.9 * dir, 1.1 * dir)) ++parts, cut_area += area(p);
+  for (int poses : kPoseCounts) {
+    SCOPED_TRACE(std::to_string(poses) + " poses");
+    StrokeSweep stroke;
+    // A short blade along a half circle in the plane z = 0: the hull of the
+    // whole arc would cut far more than the blade swept.
+    std::size_t parts = 0;
+    double cut_area = 0;
+    for (int f = 0; f <= poses; ++f) {
+      const double a = 3.14159 * f / poses;
+      const Vec3 dir(std::cos(a), std::sin(a), 0);
+      for (const auto& p : stroke.add(0.9 * dir, 1.1 * dir)) ++parts, cut_area += area(p);
+    }
+    for (const auto& p : stroke.finish()) ++parts, cut_area += area(p);
+    EXPECT_GT(parts, 1u);
+    const double swept = 0.5 * 3.14159 * (1.1 * 1.1 - 0.9 * 0.9);
+    EXPECT_LT(cut_area, 1.05 * swept);
+    EXPECT_GT(cut_area, 0.7 * swept);
   }
-  for (const auto& p : stroke.finish()) ++parts, cut_area += area(p);
-  EXPECT_GT(parts, 1u);
-  const double swept = 0.5 * 3.14159 * (1.1 * 1.1 - 0.9 * 0.9);
-  EXPECT_LT(cut_area, 1.05 * swept);
-  EXPECT_GT(cut_area, 0.7 * swept);
 }
 
-TEST(StrokeSweep, StylusRateStrokesCutWhatFrameRateOnesCut) {
-  // A haptic stylus gives a pose per millisecond: thousands per part. The
-  // part's plane and hull follow the poses incrementally (stroke_sweep.h);
-  // the polygons must be those of the same strokes sampled per frame.
-  for (int poses : {60, 2000}) {
+TEST(StrokeSweep, TurnOutOfThePlaneEndsThePartWhereverThePoseRate) {
+  for (int poses : kPoseCounts) {
     SCOPED_TRACE(std::to_string(poses) + " poses");
-    StrokeSweep straight;
-    for (int f = 0; f <= poses; ++f) {
-      const double y = -0.06 + 0.12 * f / poses, noise = (f % 3 - 1) * 1e-17;
-      ASSERT_TRUE(straight.add(Vec3(0.04 + noise, y, 0.06), Vec3(0.04, y, -0.045)).empty()) << "pose " << f;
-    }
-    const auto one = straight.finish();
-    ASSERT_EQ(one.size(), 1u);
-    EXPECT_EQ(one[0].size(), 4u);
-    EXPECT_NEAR(area(one[0]), 0.12 * 0.105, 1e-12);
-
-    // A turn out of the plane ends the part at the first pose past it.
     StrokeSweep turning;
     for (int f = 0; f <= poses; ++f)
       ASSERT_TRUE(turning.add(Vec3(0, 1.0 * f / poses, 1), Vec3(0, 1.0 * f / poses, 0)).empty()) << "pose " << f;
     std::size_t ended_at = 0;
     for (int f = 1; f <= poses && ended_at == 0; ++f)
       if (!turning.add(Vec3(1.0 * f / poses, 1.0, 1), Vec3(1.0 * f / poses, 1.0, 0)).empty()) ended_at = f;
-    // The hull of the turned part leaves its plane beyond 2% of its
-    // diameter (about 1.4): once the blade is ~0.03 along x, at any rate.
+    // The turned part's poses leave its plane beyond 2% of its diameter
+    // (about 1.4) once the blade is ~0.03 along x, at any pose rate.
     EXPECT_GT(ended_at, 0u);
     EXPECT_NEAR(1.0 * ended_at / poses, 0.03, 0.02);
-
-    StrokeSweep curved;
-    std::size_t parts = 0;
-    double cut_area = 0;
-    for (int f = 0; f <= poses; ++f) {
-      const double a = 3.14159 * f / poses;
-      const Vec3 dir(std::cos(a), std::sin(a), 0);
-      for (const auto& p : curved.add(0.9 * dir, 1.1 * dir)) ++parts, cut_area += area(p);
-    }
-    for (const auto& p : curved.finish()) ++parts, cut_area += area(p);
-    EXPECT_GT(parts, 1u);
-    const double swept = 0.5 * 3.14159 * (1.1 * 1.1 - 0.9 * 0.9);
-    EXPECT_LT(cut_area, 1.05 * swept);
-    EXPECT_GT(cut_area, 0.7 * swept);
   }
 }
 
