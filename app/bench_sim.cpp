@@ -1,7 +1,9 @@
 #include "app/bench_sim.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -10,6 +12,7 @@
 #include "engine/quantiles.h"
 #include "sim/fixed_region.h"
 #include "sim/forces.h"
+#include "sim/spring_system.h"
 #include "sim/stepper.h"
 
 namespace mtcut::app {
@@ -70,6 +73,49 @@ nlohmann::ordered_json rates(const BatchTiming& t, int steps, std::size_t spring
   return {{"steps_per_s", 1.0 / per_step},
           {"ns_per_spring", 1e9 * per_step / static_cast<double>(springs)},
           {"spring_steps_per_s", static_cast<double>(springs) / per_step}};
+}
+
+// The parts of one implicit frame at a fixed state (the box at `state`),
+// each the minimum over `repeats` timings: the assembly of A and b, the
+// CG's start (its first residual) and one CG iteration (the difference of
+// two solves of fixed lengths over their difference). A frame costs about
+// assemble + start + (mean iterations + 1/2) x iteration: the true-residual
+// check that ends a solve is about half an iteration. Minima, not medians:
+// on a shared host a part's time swings with the other jobs (1.7x between
+// minutes on ours), its minimum much less, so these figures compare across
+// runs where the frame times do not.
+nlohmann::ordered_json implicit_frame_parts(const sim::SpringModel& model, const sim::Environment& env,
+                                            const sim::SpringState& state, int repeats) {
+  using Clock = std::chrono::steady_clock;
+  const std::size_t n = model.num_particles();
+  const double h = 1.0 / 60.0;
+  const auto kind = sim::IntegratorDef{}.preconditioner;
+  sim::SpringSystem system;
+  std::vector<Vec3> f(n), b(n), x(n);
+  sim::compute_body_forces(model, env, state, f);
+  const auto timed = [](const auto& work) {
+    const auto start = Clock::now();
+    work();
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  };
+  // The solve from 0 with a fixed iteration count (tolerance 0: no early
+  // stop; infinite: stops before the first iteration, with no check).
+  const auto solve = [&](double tolerance2, int iterations) {
+    std::fill(x.begin(), x.end(), Vec3::Zero());
+    return timed([&] { system.solve(kind, b, tolerance2, iterations, x); });
+  };
+  constexpr int kShort = 5, kLong = 15;
+  double assemble = 1e300, start = 1e300, short_solve = 1e300, long_solve = 1e300;
+  for (int r = 0; r < repeats; ++r) {
+    assemble = std::min(assemble, timed([&] { system.assemble(model, state, f, h, b); }));
+    start = std::min(start, solve(std::numeric_limits<double>::infinity(), kLong));
+    short_solve = std::min(short_solve, solve(0.0, kShort));
+    long_solve = std::min(long_solve, solve(0.0, kLong));
+  }
+  return {{"assemble_ms", 1e3 * assemble},
+          {"cg_start_ms", 1e3 * start},
+          {"cg_iteration_ms", 1e3 * (long_solve - short_solve) / (kLong - kShort)},
+          {"repeats", repeats}};
 }
 
 }  // namespace
@@ -134,6 +180,7 @@ nlohmann::ordered_json run_sim_bench(const SimBenchDef& def) {
     // model it has not seen, with no warm start (what follows a cut or an
     // LOD change, at worst).
     std::vector<double> first_frame_seconds;
+    sim::SpringState parts_state;  // the box one second in (swinging), for the frame's parts
     const BatchTiming impl = time_batches(def.runs, [&] {
       sim::SpringState implicit_state = sim::rest_state(model);
       sim::Stepper implicit_stepper;
@@ -143,6 +190,7 @@ nlohmann::ordered_json run_sim_bench(const SimBenchDef& def) {
         cg_iterations += implicit_stepper.step(model, env, implicit_def, implicit_state, 1.0 / 60.0).cg_iterations;
         if (s == 0)
           first_frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        if (s == std::min(60, def.frames) - 1) parts_state = implicit_state;
       }
       implicit_refused += implicit_stepper.refused_steps();
     });
@@ -154,6 +202,7 @@ nlohmann::ordered_json run_sim_bench(const SimBenchDef& def) {
     out[key]["cg_tolerance"] = tolerance;
     out[key]["frames_per_run"] = def.frames;
     out[key]["first_frame_ms"] = 1e3 * engine::median(first_frame_seconds);
+    if (key == "implicit_euler") out[key]["frame_parts"] = implicit_frame_parts(model, env, parts_state, 10 * def.runs);
   }
   out["refused_steps"] = stepper.refused_steps() + implicit_refused;
   out["runs"] = def.runs;

@@ -34,6 +34,12 @@ TEST(BenchSim, ReportsEveryIntegratorAndTheReference) {
     EXPECT_GT(implicit["first_frame_ms"].get<double>(), 0.0) << key;
     EXPECT_GT(implicit["mean_cg_iterations"].get<double>(), 0.0) << key;
   }
+  // The default tolerance's frame, in parts (minima at a fixed state).
+  const auto& parts = out["implicit_euler"]["frame_parts"];
+  for (const char* part : {"assemble_ms", "cg_start_ms", "cg_iteration_ms"})
+    EXPECT_GT(parts[part].get<double>(), 0.0) << part;
+  EXPECT_EQ(parts["repeats"].get<int>(), 10);
+  EXPECT_FALSE(out["implicit_euler_loose"].contains("frame_parts"));
   // The looser tolerance takes fewer iterations on the same frames.
   EXPECT_LT(out["implicit_euler_loose"]["mean_cg_iterations"].get<double>(),
             out["implicit_euler"]["mean_cg_iterations"].get<double>());
