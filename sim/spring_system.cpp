@@ -14,8 +14,8 @@ Sym3 Sym3::inverse() const {
 
 void SpringSystem::resize(std::size_t n, std::size_t) {
   for (auto* v : {&own_, &diag_, &diag_inverse_}) v->resize(n);
-  for (auto* v : {&rhat_, &t_, &s_, &u_, &acc_, &acc_x_}) v->assign(n + 1, Vec3::Zero());  // [n] = 0: the pads' dummy
-  for (auto* v : {&r_, &z_, &p_, &ut_, &q_}) v->resize(n);
+  for (auto* v : {&rhat_, &t_, &u_, &acc_}) v->assign(n + 1, Vec3::Zero());  // [n] = 0: the pads' dummy
+  for (auto* v : {&b_, &r_, &z_, &p_, &ut_, &q_}) v->resize(n);
 }
 
 // (A u)_i = own_i u_i + sum over i's springs of B_s (u_i - u_o) = own_i u_i
@@ -40,19 +40,25 @@ void SpringSystem::multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out) 
 
 CgStats SpringSystem::solve(PreconditionerKind kind, const std::vector<Vec3>& b, double tolerance2,
                             int max_iterations, std::vector<Vec3>& x) {
-  if (kind == PreconditionerKind::kSymmetricGaussSeidel && rows_sorted_)
-    return solve_gauss_seidel(b, tolerance2, max_iterations, x);
-  return solve_block_jacobi(b, tolerance2, max_iterations, x);
+  multiply(x, r_);
+  for (std::size_t i = 0; i < b.size(); ++i) r_[i] = b[i] - r_[i];
+  return solve_from_residual(kind, r_, tolerance2, max_iterations, x);
 }
 
-CgStats SpringSystem::solve_block_jacobi(const std::vector<Vec3>& b, double tolerance2, int max_iterations,
+CgStats SpringSystem::solve_from_residual(PreconditionerKind kind, const std::vector<Vec3>& r, double tolerance2,
+                                          int max_iterations, std::vector<Vec3>& x) {
+  if (kind == PreconditionerKind::kSymmetricGaussSeidel && rows_sorted_)
+    return solve_gauss_seidel(r, tolerance2, max_iterations, x);
+  return solve_block_jacobi(r, tolerance2, max_iterations, x);
+}
+
+CgStats SpringSystem::solve_block_jacobi(const std::vector<Vec3>& r, double tolerance2, int max_iterations,
                                          std::vector<Vec3>& x) {
   const std::size_t n = own_.size();
   std::vector<Vec3>& ap = q_;
-  multiply(x, ap);
   double rz = 0, rr = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    r_[i] = b[i] - ap[i];
+    r_[i] = r[i];
     z_[i] = diag_inverse_[i] * r_[i];
     p_[i] = z_[i];
     rz += r_[i].dot(z_[i]);

@@ -83,11 +83,22 @@ class SpringSystem {
   // added here, in the same pass as the blocks.
   void assemble(const SpringModel& model, const SpringState& state, const std::vector<Vec3>& f, double h,
                 std::vector<Vec3>& b);
+  // The same, but writes the residual r = b - A x0 at a start x0 (0 at
+  // fixed particles), each spring's share of A x0 taken in the pass that
+  // builds its block: what solve_from_residual continues from, with no pass
+  // of its own for the residual.
+  void assemble(const SpringModel& model, const SpringState& state, const std::vector<Vec3>& f, double h,
+                const std::vector<Vec3>& x0, std::vector<Vec3>& r);
+  // |b|^2 of the last assembly (CG's stopping scale).
+  double rhs_norm2() const { return rhs_norm2_; }
 
   // Solves A x = b from the given x (0 at fixed particles) until
   // |b - A x|^2 <= tolerance2 or max_iterations.
   CgStats solve(PreconditionerKind kind, const std::vector<Vec3>& b, double tolerance2, int max_iterations,
                 std::vector<Vec3>& x);
+  // The same from x with its residual r = b - A x given (assemble's).
+  CgStats solve_from_residual(PreconditionerKind kind, const std::vector<Vec3>& r, double tolerance2,
+                              int max_iterations, std::vector<Vec3>& x);
 
   // out = A u (n_particles). Not const: u is copied into scratch with the pads' dummy.
   void multiply(const std::vector<Vec3>& u, std::vector<Vec3>& out);
@@ -99,8 +110,9 @@ class SpringSystem {
   bool rows_sorted() const { return rows_sorted_; }
 
  private:
-  CgStats solve_block_jacobi(const std::vector<Vec3>& b, double tolerance2, int max_iterations, std::vector<Vec3>& x);
-  CgStats solve_gauss_seidel(const std::vector<Vec3>& b, double tolerance2, int max_iterations, std::vector<Vec3>& x);
+  // Both continue from x with its residual r.
+  CgStats solve_block_jacobi(const std::vector<Vec3>& r, double tolerance2, int max_iterations, std::vector<Vec3>& x);
+  CgStats solve_gauss_seidel(const std::vector<Vec3>& r, double tolerance2, int max_iterations, std::vector<Vec3>& x);
   void resize(std::size_t n, std::size_t m);
   // Lays the springs out in pairs when their ends changed since the last call.
   void update_layout(const SpringModel& model);
@@ -115,12 +127,15 @@ class SpringSystem {
   // (n_particles) the mass term plus masked springs' blocks (what the
   // per-spring form of A misses), the full diagonal blocks, their inverses.
   std::vector<Sym3> own_, diag_, diag_inverse_;
+  // b while an assembly sums it (n_particles), |b|^2 once it has.
+  std::vector<Vec3> b_;
+  double rhs_norm2_ = 0;
   // CG scratch: (n_particles + 1, the last entry the pads' dummy, kept 0)
   // for the vectors the sweeps pull from and the pushes' accumulator (all 0
-  // between sweeps; acc_x_ takes the pushes of x in the SSOR solver's first
-  // pass), (n_particles) for the others.
-  std::vector<Vec3> rhat_, t_, s_, u_, acc_, acc_x_;
-  std::vector<Vec3> r_, z_, p_, ut_, q_;
+  // between sweeps), (n_particles) for the others (zero_: all 0, the start
+  // of assemble without one).
+  std::vector<Vec3> rhat_, t_, u_, acc_;
+  std::vector<Vec3> r_, z_, p_, ut_, q_, zero_;
 };
 
 }  // namespace mtcut::sim

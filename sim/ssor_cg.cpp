@@ -13,9 +13,8 @@
 // sweep, each particle finds its column's sum (o < i) of what W^-1 gave the
 // earlier particles in acc_, pushed there by them, and pushes its own.
 //
-// The start, rhat = W^-1 (b - A x), is one forward pass: A x's row sums
-// pulled, its column sums and W^-1's pushed from the same blocks (push2),
-// in the order multiply adds them (the same r, bit for bit).
+// The start, rhat = W^-1 r, r = b - A x given (the assembly sums it), is
+// one forward pass.
 //
 // The true residual r = W rhat = D rhat / w + L rhat costs a sweep, so it is
 // computed only when rhat . D rhat, scaled by the ratio |r|^2 / rhat . D rhat
@@ -29,7 +28,7 @@
 
 namespace mtcut::sim {
 
-MTCUT_SPRING_LOOP CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& b, double tolerance2,
+MTCUT_SPRING_LOOP CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec3>& r0, double tolerance2,
                                                            int max_iterations, std::vector<Vec3>& x_vec) {
   const std::size_t n = own_.size();
   const Sym3* diag = diag_.data();
@@ -37,7 +36,7 @@ MTCUT_SPRING_LOOP CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec
   // t is pulled from: n + 1 entries, the last 0. acc (n + 1) takes the
   // forward sweeps' pushes; each particle reads its entry and zeroes it.
   Vec3 *x = x_vec.data(), *rhat = rhat_.data(), *z = z_.data(), *p = p_.data(), *t = t_.data(), *ut = ut_.data(),
-       *q = q_.data(), *sv = s_.data(), *acc = acc_.data();
+       *q = q_.data(), *acc = acc_.data();
   // acc_i: the sum of i's column's pushes, then 0 again.
   const auto take = [acc](std::size_t i) {
     const Vec3 sum = acc[i];
@@ -57,22 +56,12 @@ MTCUT_SPRING_LOOP CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec
     return rr;
   };
 
-  // One forward pass: r = b - A x, as multiply computes it (x's row pulled
-  // from the padded copy u, its column pushed into acc_x by the earlier
-  // particles), and rhat = W^-1 r, both pushes from the same blocks.
-  std::copy(x_vec.begin(), x_vec.begin() + static_cast<std::ptrdiff_t>(n), u_.begin());  // u_[n] stays 0
-  const Vec3* u = u_.data();
-  Vec3* acc_x = acc_x_.data();
+  // One forward pass: rhat = W^-1 r0.
   double rr = 0, rz = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 self = dinv[i].xx == 0 ? Vec3(own_[i] * u[i]) : Vec3(diag[i] * u[i]);
-    Vec3 ax = self - rows_.pull(i, u);
-    ax -= acc_x[i];
-    acc_x[i].setZero();
-    const Vec3 r = b[i] - ax;
-    rr += r.squaredNorm();
-    rhat[i] = dinv[i] * (kRelaxation * (r + take(i)));
-    rows_.push2(i, u[i], acc_x, rhat[i], acc);
+    rr += r0[i].squaredNorm();
+    rhat[i] = dinv[i] * (kRelaxation * (r0[i] + take(i)));
+    rows_.push(i, rhat[i], acc);
     z[i] = diag[i] * rhat[i];
     p[i] = z[i];
     rz += rhat[i].dot(z[i]);
@@ -99,9 +88,9 @@ MTCUT_SPRING_LOOP CgStats SpringSystem::solve_gauss_seidel(const std::vector<Vec
     double pq = 0;
     for (std::size_t i = 0; i < n; ++i) {  // q = Ahat p = t + W^-1 (p - (2 / w - 1) D t)
       const Vec3 sum = take(i);
-      sv[i] = dinv[i] * (kRelaxation * (sum + (kRelaxation - 1) * p[i] - (2 - kRelaxation) * ut[i]));
-      rows_.push(i, sv[i], acc);
-      q[i] = t[i] + sv[i];
+      const Vec3 sv = dinv[i] * (kRelaxation * (sum + (kRelaxation - 1) * p[i] - (2 - kRelaxation) * ut[i]));
+      rows_.push(i, sv, acc);
+      q[i] = t[i] + sv;
       pq += p[i].dot(q[i]);
     }
     if (!(pq > 0)) break;  // converged to round-off

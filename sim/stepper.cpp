@@ -51,7 +51,7 @@ void Stepper::carry_warm_start(std::vector<std::vector<Vec3>> history) {
 void Stepper::resize(const SpringModel& model) {
   const std::size_t n = model.num_particles();
   if (dv_.size() != n) restart_warm_start(n);  // a new model: no warm start
-  for (auto* v : {&f_, &saved_x_, &saved_v_, &b_, &dv_change_, &dv_change_before_}) v->resize(n);
+  for (auto* v : {&f_, &saved_x_, &saved_v_, &residual_, &dv_change_, &dv_change_before_}) v->resize(n);
   if (acc_.size() != n) acc_.assign(n, Vec3::Zero());
 }
 
@@ -104,8 +104,6 @@ void Stepper::substep_symplectic(const SpringModel& model, const Environment& en
 int Stepper::substep_implicit(const SpringModel& model, const Environment& env, const IntegratorDef& def,
                               SpringState& state, double h, double& residual) {
   const std::size_t n = model.num_particles();
-  compute_body_forces(model, env, state, f_);
-  system_.assemble(model, state, f_, h, b_);
   // The warm start: dv extrapolated from the last three steps, last +
   // e (last - previous) + e2 (previous - the one before), e and e2 fitted
   // to the last step. A smooth motion (the bench box swinging) wants them
@@ -122,20 +120,22 @@ int Stepper::substep_implicit(const SpringModel& model, const Environment& env, 
     dv_last_[i] = last;
   }
 
-  // Preconditioned CG on A dv = b.
+  // Preconditioned CG on A dv = b, from the warm start and its residual
+  // (residual_: b - A dv, summed by the assembly).
+  compute_body_forces(model, env, state, f_);
+  system_.assemble(model, state, f_, h, dv_, residual_);
   // The scale the residual is measured against: the right-hand side, but
   // never less than the impulse of the body's weight over the step (near
   // equilibrium b tends to 0 and a purely relative test would chase
   // round-off; a force error below tol * weight is invisible).
-  double b_norm2 = 0, weight_impulse2 = 0;
+  double weight_impulse2 = 0;
   const double gh2 = (h * env.gravity).squaredNorm();
-  for (std::size_t i = 0; i < n; ++i) {
-    b_norm2 += b_[i].squaredNorm();
+  for (std::size_t i = 0; i < n; ++i)
     if (model.inv_mass[i] != 0) weight_impulse2 += model.mass[i] * model.mass[i] * gh2;
-  }
-  const double scale2 = std::max(b_norm2, weight_impulse2);
+  const double scale2 = std::max(system_.rhs_norm2(), weight_impulse2);
   const double tolerance2 = def.cg_tolerance * def.cg_tolerance * scale2;
-  const CgStats stats = system_.solve(def.preconditioner, b_, tolerance2, def.cg_max_iterations, dv_);
+  const CgStats stats =
+      system_.solve_from_residual(def.preconditioner, residual_, tolerance2, def.cg_max_iterations, dv_);
   const double rr = stats.residual2;
   residual = scale2 > 0 ? std::sqrt(rr / scale2) : 0.0;
 

@@ -80,8 +80,9 @@ class Stepper {
 
   std::uint64_t refused_steps_ = 0;
   // Scratch (n_particles): forces, saved state, the implicit step's dv, the
-  // one before (the warm start extrapolates them) and right-hand side.
-  std::vector<Vec3> f_, saved_x_, saved_v_, dv_, dv_last_, b_;
+  // one before (the warm start extrapolates them) and the system's residual
+  // at the warm start.
+  std::vector<Vec3> f_, saved_x_, saved_v_, dv_, dv_last_, residual_;
   // (n_particles) the dv before dv_last_, and the last two changes of dv,
   // along which the warm start extrapolates.
   std::vector<Vec3> dv_before_, dv_change_, dv_change_before_;

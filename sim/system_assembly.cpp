@@ -35,11 +35,22 @@ void SpringSystem::update_layout(const SpringModel& model) {
   rows_.build(n, model.spring_a, model.spring_b);
 }
 
+void SpringSystem::assemble(const SpringModel& model, const SpringState& state, const std::vector<Vec3>& f, double h,
+                            std::vector<Vec3>& b) {
+  zero_.assign(model.num_particles(), Vec3::Zero());
+  assemble(model, state, f, h, zero_, b);
+}
+
 // b = h (f0 + h K v0), K v0 = -sum_s J_s (v_a - v_b), J_s = k (n n^T + t (I - n n^T)).
 // Spring s adds g_s to b_a and -g_s to b_b: its force (Hooke + dashpot, as
-// compute_forces) times h, minus h^2 J_s (v_a - v_b).
+// compute_forces) times h, minus h^2 J_s (v_a - v_b). A x0 = M' x0 + the
+// sum over the springs of B_s (x0_a - x0_b) at a and its opposite at b, so
+// r = b - A x0 takes g_s - B_s (x0_a - x0_b) where b takes g_s (a masked
+// spring's block included: x0 is 0 at its fixed end, so that is its share
+// of the free end's own block times x0).
 MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const SpringState& state,
-                                              const std::vector<Vec3>& f, double h, std::vector<Vec3>& b) {
+                                              const std::vector<Vec3>& f, double h, const std::vector<Vec3>& dv0,
+                                              std::vector<Vec3>& r) {
   const std::size_t n = model.num_particles();
   update_layout(model);
   const double h2 = h * h;
@@ -49,7 +60,8 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
   for (std::size_t i = 0; i < n; ++i) {
     own_[i] = Sym3::scaled_identity(model.mass[i] * mass_factor);
     diag_[i] = own_[i];
-    b[i] = h * f[i];
+    b_[i] = h * f[i];
+    r[i] = b_[i] - own_[i].xx * dv0[i];
   }
 
   // One pass over each particle a's pairs of springs (a, c): B_s into the
@@ -60,14 +72,15 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
   // stiffness and damping 0: everything it adds is exactly 0.
   const std::int32_t *start = rows_.start.data(), *other = rows_.other.data(), *lane_spring = rows_.lane_spring.data();
   BlockPair* blocks = rows_.blocks.data();
-  const Vec3 *x = state.x.data(), *v = state.v.data();
+  const Vec3 *x = state.x.data(), *v = state.v.data(), *start_x = dv0.data();
+  Vec3* b = b_.data();
   const double *rest_length = model.rest_length.data(), *stiffness = model.stiffness.data(),
                *damping = model.damping.data();
   const Lanes2 one = {1.0, 1.0}, tiny = {kTinyLength2, kTinyLength2};
   for (std::size_t a = 0; a < n; ++a) {
-    const Vec3 xa = x[a], va = v[a];
+    const Vec3 xa = x[a], va = v[a], sa = start_x[a];
     const bool a_fixed = inv_mass[a] == 0;
-    Lanes2 bx = {0, 0}, by = {0, 0}, bz = {0, 0};
+    Lanes2 bx = {0, 0}, by = {0, 0}, bz = {0, 0}, rx = {0, 0}, ry = {0, 0}, rz = {0, 0};
     Lanes2 dxx = {0, 0}, dxy = {0, 0}, dxz = {0, 0}, dyy = {0, 0}, dyz = {0, 0}, dzz = {0, 0};
     for (std::int32_t k = start[a]; k < start[a + 1]; ++k) {
       const std::int32_t c0 = other[2 * k], s0 = lane_spring[2 * k];
@@ -99,6 +112,18 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
       b[c1] -= Vec3(gx[1], gy[1], gz[1]);
       const Lanes2 root = sqrt_lanes(along);
       BlockPair blk = {root * nx, root * ny, root * nz, across};
+      // g_s - B_s (x0_a - x0_c).
+      const Vec3 &e0 = start_x[c0], &e1 = start_x[c1];
+      const Lanes2 ex = sa.x() - Lanes2{e0.x(), e1.x()}, ey = sa.y() - Lanes2{e0.y(), e1.y()},
+                   ez = sa.z() - Lanes2{e0.z(), e1.z()};
+      const Lanes2 ew = blk.wx * ex + blk.wy * ey + blk.wz * ez;
+      const Lanes2 hx = gx - (across * ex + ew * blk.wx), hy = gy - (across * ey + ew * blk.wy),
+                   hz = gz - (across * ez + ew * blk.wz);
+      rx += hx;
+      ry += hy;
+      rz += hz;
+      r[c0] -= Vec3(hx[0], hy[0], hz[0]);
+      r[c1] -= Vec3(hx[1], hy[1], hz[1]);
       const Lanes2 bxx = blk.wx * blk.wx + across, bxy = blk.wx * blk.wy, bxz = blk.wx * blk.wz,
                    byy = blk.wy * blk.wy + across, byz = blk.wy * blk.wz, bzz = blk.wz * blk.wz + across;
       dxx += bxx;
@@ -129,6 +154,7 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
       blocks[k] = blk;
     }
     b[a] += Vec3(bx[0] + bx[1], by[0] + by[1], bz[0] + bz[1]);
+    r[a] += Vec3(rx[0] + rx[1], ry[0] + ry[1], rz[0] + rz[1]);
     Sym3& d = diag_[a];
     d.xx += dxx[0] + dxx[1];
     d.xy += dxy[0] + dxy[1];
@@ -137,14 +163,17 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
     d.yz += dyz[0] + dyz[1];
     d.zz += dzz[0] + dzz[1];
   }
+  double b_norm2 = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (inv_mass[i] == 0) {
-      b[i].setZero();
+      r[i].setZero();
       diag_inverse_[i] = Sym3{};
     } else {
+      b_norm2 += b[i].squaredNorm();
       diag_inverse_[i] = diag_[i].inverse();
     }
   }
+  rhs_norm2_ = b_norm2;
 }
 
 }  // namespace mtcut::sim

@@ -99,6 +99,30 @@ TEST(SsorCg, GivesTheReferenceCgsSolution) {
   }
 }
 
+// From a warm start with its residual given (the assembly's), the same
+// iterations and the same solution as from the right-hand side.
+TEST(SsorCg, ContinuesFromAGivenResidual) {
+  for (const auto kind : {PreconditionerKind::kSymmetricGaussSeidel, PreconditionerKind::kBlockJacobi}) {
+    test::JitteredSystem c = random_system(5);
+    const std::size_t n = c.b.size();
+    const double tolerance2 = 1e-20 * dot(c.b, c.b);
+    std::mt19937 rng(55);
+    std::normal_distribution<double> g(0.0, 0.01);
+    std::vector<Vec3> start(n, Vec3::Zero());
+    for (std::size_t i = 0; i < n; ++i)
+      if (c.model.inv_mass[i] != 0) start[i] = Vec3(g(rng), g(rng), g(rng));
+    std::vector<Vec3> from_b = start, from_r = start, r(n);
+    c.system.multiply(start, r);
+    for (std::size_t i = 0; i < n; ++i) r[i] = c.b[i] - r[i];
+    const CgStats by_b = c.system.solve(kind, c.b, tolerance2, 1000, from_b);
+    const CgStats by_r = c.system.solve_from_residual(kind, r, tolerance2, 1000, from_r);
+    EXPECT_GT(by_b.iterations, 0);
+    EXPECT_EQ(by_r.iterations, by_b.iterations);
+    EXPECT_LE(by_r.residual2, tolerance2);
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(from_r[i], from_b[i]) << i;
+  }
+}
+
 // Stopped by max_iterations before the tolerance: the reported residual is
 // x's, and falls with each iteration allowed.
 TEST(SsorCg, AppliesTheLastStepWhenTheIterationsRunOut) {
