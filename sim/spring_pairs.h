@@ -75,25 +75,6 @@ struct PairedSide {
       acc[o[2 * k + 1]] += Vec3(cx[1], cy[1], cz[1]);
     }
   }
-
-  // push(i, u, acc_u) and push(i, v, acc_v) in one pass over i's blocks
-  // (the same sums, bit for bit).
-  void push2(std::size_t i, const Vec3& u, Vec3* acc_u, const Vec3& v, Vec3* acc_v) const {
-    const Lanes2 ux = {u.x(), u.x()}, uy = {u.y(), u.y()}, uz = {u.z(), u.z()};
-    const Lanes2 vx = {v.x(), v.x()}, vy = {v.y(), v.y()}, vz = {v.z(), v.z()};
-    const std::int32_t* o = other.data();
-    for (std::int32_t k = start[i]; k < start[i + 1]; ++k) {
-      const BlockPair& b = blocks[static_cast<std::size_t>(k)];
-      const Lanes2 du = b.wx * ux + b.wy * uy + b.wz * uz, dv = b.wx * vx + b.wy * vy + b.wz * vz;
-      const Lanes2 cx = b.across * ux + du * b.wx, cy = b.across * uy + du * b.wy, cz = b.across * uz + du * b.wz;
-      const Lanes2 ex = b.across * vx + dv * b.wx, ey = b.across * vy + dv * b.wy, ez = b.across * vz + dv * b.wz;
-      const std::size_t o0 = static_cast<std::size_t>(o[2 * k]), o1 = static_cast<std::size_t>(o[2 * k + 1]);
-      acc_u[o0] += Vec3(cx[0], cy[0], cz[0]);
-      acc_u[o1] += Vec3(cx[1], cy[1], cz[1]);
-      acc_v[o0] += Vec3(ex[0], ey[0], ez[0]);
-      acc_v[o1] += Vec3(ex[1], ey[1], ez[1]);
-    }
-  }
 };
 
 }  // namespace mtcut::sim

@@ -76,22 +76,5 @@ TEST(PairedSide, PushAddsEachSpringsShareAtItsOtherEnd) {
   EXPECT_EQ(acc[r.n], Vec3::Zero());
 }
 
-// push2(i, u_i, acc_u, v_i, acc_v) leaves exactly what push does with u
-// into acc_u and with v into acc_v.
-TEST(PairedSide, Push2IsTwoPushesBitForBit) {
-  const RandomSide r(8);
-  const std::vector<Vec3> u = random_vectors(r.n, 10), v = random_vectors(r.n, 11);
-  std::vector<Vec3> acc_u(r.n + 1, Vec3::Zero()), acc_v(r.n + 1, Vec3::Zero()), two_u = acc_u, two_v = acc_v;
-  for (std::size_t i = 0; i < r.n; ++i) {
-    r.side.push(i, u[i], acc_u.data());
-    r.side.push(i, v[i], acc_v.data());
-    r.side.push2(i, u[i], two_u.data(), v[i], two_v.data());
-  }
-  for (std::size_t o = 0; o < r.n; ++o) {
-    EXPECT_EQ(two_u[o], acc_u[o]) << o;
-    EXPECT_EQ(two_v[o], acc_v[o]) << o;
-  }
-}
-
 }  // namespace
 }  // namespace mtcut::sim
