@@ -48,17 +48,33 @@ void add_springs(const std::vector<std::array<std::int32_t, 4>>& tets, const std
   for (std::size_t i = 0; i < n; ++i) bucket_start[i + 1] += bucket_start[i];
   struct Use {
     std::int32_t b;  // the edge's higher end
-    double volume;   // of the tet using it
+    double volume;   // of the tet using it (scaled down for a short edge)
   };
   std::vector<Use> uses(6 * tets.size());  // by lower end, in tet order
   {
     std::vector<std::int32_t> next(bucket_start.begin(), bucket_start.end() - 1);
-    for (std::size_t t = 0; t < tets.size(); ++t)
-      for (const auto& e : engine::kTetEdges) {
-        const auto a = tets[t][e[0]], b = tets[t][e[1]];
-        uses[static_cast<std::size_t>(next[static_cast<std::size_t>(std::min(a, b))]++)] = {std::max(a, b),
-                                                                                             volumes[t]};
+    // Each use's volume, scaled by |e|^2 / (kShortEdgeFloor L_T)^2 when its
+    // edge is shorter than kShortEdgeFloor times the tet's longest edge L_T:
+    // the sum over |e|^2 is then sum vol(T) / max(|e|, kShortEdgeFloor L_T)^2.
+    const double floor2 = kShortEdgeFloor * kShortEdgeFloor;
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+      std::array<double, 6> length2{};
+      double longest2 = 0;
+      for (std::size_t k = 0; k < 6; ++k) {
+        const auto& e = engine::kTetEdges[k];
+        length2[k] = (model.rest_position[static_cast<std::size_t>(tets[t][e[0]])] -
+                      model.rest_position[static_cast<std::size_t>(tets[t][e[1]])])
+                         .squaredNorm();
+        longest2 = std::max(longest2, length2[k]);
       }
+      for (std::size_t k = 0; k < 6; ++k) {
+        const auto& e = engine::kTetEdges[k];
+        const auto a = tets[t][e[0]], b = tets[t][e[1]];
+        const double shortest2 = floor2 * longest2;
+        const double volume = length2[k] < shortest2 ? volumes[t] * (length2[k] / shortest2) : volumes[t];
+        uses[static_cast<std::size_t>(next[static_cast<std::size_t>(std::min(a, b))]++)] = {std::max(a, b), volume};
+      }
+    }
   }
 
   std::vector<double> volume_sum;  // (n_springs)

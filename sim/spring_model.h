@@ -13,6 +13,17 @@
 //   k_e = E * sum_{T around e} vol(T) / |e|^2
 // which makes a coarse and a fine tessellation of the same body about as
 // stiff as each other (the sum of edge stiffnesses scales with volume / h^2).
+// An edge shorter than kShortEdgeFloor times its tet's longest edge L_T
+// counts as that long in its tet's term: k_e = E * sum vol(T) /
+// max(|e|, kShortEdgeFloor * L_T)^2. Why: the MT cutter does not snap (see
+// cut/mt/mt_cut.h), so a cut passing a hair from a vertex leaves slivers
+// with a sub-micron edge (0.75 um in the default scenario), whose stiffness
+// grows as 1 / |e| while their particles' mass shrinks as |e|: h^2 k / m
+// reached 2e9, and CG took 100 iterations a frame after the cut. With the
+// floor, a sliver's stiffness shrinks with its volume as its mass does.
+// TetGen's quality meshes have no edge below the floor (the builtin box and
+// ellipsoid, the shared liver.msh); an MT's coarser frontiers have a few
+// (the liver scenario's first: 21 of 152,136 edge uses).
 // Masses are lumped: each tet gives a quarter of density * vol(T) to each of
 // its corners, so the total mass is exactly density * total volume.
 
@@ -31,6 +42,10 @@ namespace mtcut::sim {
 using engine::Tet;
 using engine::Vec3;
 using engine::VertId;
+
+// The shortest an edge counts in Van Gelder's formula, as a fraction of its
+// tet's longest edge (see above).
+inline constexpr double kShortEdgeFloor = 0.1;
 
 struct SpringModel {
   // --- particles (n_particles)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 #include <utility>
@@ -52,7 +53,9 @@ TEST(SpringModel, SpringsAreSortedByFirstThenSecondParticle) {
 // Against a plain reference on the real liver and on random subsets of its
 // tets (as a frontier uses some of the MT's vertices): one spring per
 // distinct edge, and its stiffness E * (sum of its tets' volumes) / |e|^2
-// with the volumes summed in tet order, bit for bit.
+// with the volumes summed in tet order, bit for bit (a tet's volume scaled
+// by |e|^2 / (kShortEdgeFloor L_T)^2 for an edge below the floor, which
+// this liver has none of: AShortEdgeCountsAsTheFloorInVanGelder).
 TEST(SpringModel, SpringsMatchAReferenceOnTheLiverAndItsSubsets) {
   const engine::TetMesh mesh = engine::load_mesh(test::shared_mesh("liver.msh"), {}).mesh;
   MaterialDef material;
@@ -70,7 +73,14 @@ TEST(SpringModel, SpringsMatchAReferenceOnTheLiverAndItsSubsets) {
     for (const engine::Tet& t : tets) {
       const double vol = engine::signed_volume(mesh.position(t[0]), mesh.position(t[1]), mesh.position(t[2]),
                                                mesh.position(t[3]));
-      for (const auto& e : engine::kTetEdges) volume_of[std::minmax(t[e[0]], t[e[1]])] += vol;
+      double longest2 = 0;
+      for (const auto& e : engine::kTetEdges)
+        longest2 = std::max(longest2, (mesh.position(t[e[0]]) - mesh.position(t[e[1]])).squaredNorm());
+      const double shortest2 = kShortEdgeFloor * kShortEdgeFloor * longest2;
+      for (const auto& e : engine::kTetEdges) {
+        const double length2 = (mesh.position(t[e[0]]) - mesh.position(t[e[1]])).squaredNorm();
+        volume_of[std::minmax(t[e[0]], t[e[1]])] += length2 < shortest2 ? vol * (length2 / shortest2) : vol;
+      }
     }
     ASSERT_EQ(model.num_springs(), volume_of.size()) << keep;
     for (std::size_t s = 0; s < model.num_springs(); ++s) {
@@ -97,6 +107,35 @@ TEST(SpringModel, VanGelderStiffnessOfOneTet) {
     const double l = model.rest_length[s];
     EXPECT_NEAR(model.stiffness[s], 600.0 * (1.0 / 6.0) / (l * l), 1e-12);
     EXPECT_NEAR(model.damping[s], material.stiffness_damping * model.stiffness[s], 1e-15);
+  }
+}
+
+// A sliver: one edge of length eps, the others about 1. Its short spring
+// counts the edge as kShortEdgeFloor * sqrt(2) long (the longest edge), so
+// its stiffness shrinks with the sliver's volume (eps / 6) as the masses
+// at its ends do, where E vol / eps^2 would grow as 1 / eps; the long
+// edges keep E vol / |e|^2. An edge above the floor is not touched.
+TEST(SpringModel, AShortEdgeCountsAsTheFloorInVanGelder) {
+  MaterialDef material;
+  material.youngs_modulus = 600;
+  for (const double eps : {0.5, 1e-3, 1e-6}) {
+    const std::vector<Vec3> p = {{0, 0, 0}, {eps, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const std::vector<engine::Tet> tets = {{VertId(0), VertId(1), VertId(2), VertId(3)}};
+    const SpringModel model = build_spring_model(tets, p, material);
+    ASSERT_TRUE(model.validate().ok());
+    const double vol = eps / 6, floor = kShortEdgeFloor * std::sqrt(2.0);
+    std::size_t short_springs = 0;
+    for (std::size_t s = 0; s < model.num_springs(); ++s) {
+      const double l = model.rest_length[s];
+      const double counted = std::max(l, floor);
+      short_springs += l < floor;
+      EXPECT_NEAR(model.stiffness[s], 600.0 * vol / (counted * counted), 1e-12 * model.stiffness[s]) << eps << " " << s;
+    }
+    EXPECT_EQ(short_springs, eps < floor ? 1u : 0u) << eps;
+    const double smallest_mass = *std::min_element(model.mass.begin(), model.mass.end());
+    const double stiffest = *std::max_element(model.stiffness.begin(), model.stiffness.end());
+    // k / m bounded as the sliver thins: E / (density floor^2) times a constant.
+    EXPECT_LT(stiffest / smallest_mass, 4 * 600.0 / (material.density * floor * floor) * 2.01) << eps;
   }
 }
 
