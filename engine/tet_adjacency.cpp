@@ -7,9 +7,12 @@
 namespace mtcut::engine {
 namespace {
 
+// A face as its two larger vertex ids (packed, larger last) and its slot
+// (tet * 4 + local face), in the bucket of its smallest vertex id.
 struct FaceSlot {
-  std::array<std::int32_t, 3> key;  // sorted vertex ids
-  std::int64_t slot;                // tet * 4 + local face
+  std::uint64_t rest;
+  std::int64_t slot;
+  bool operator<(const FaceSlot& o) const { return rest < o.rest || (rest == o.rest && slot < o.slot); }
 };
 
 }  // namespace
@@ -19,38 +22,59 @@ std::array<VertId, 3> face_vertices(const Tet& tet, int f) {
   return {tet[lf[0]], tet[lf[1]], tet[lf[2]]};
 }
 
+// Faces are matched by their sorted vertex ids. Why buckets, not one sort:
+// a face's smallest id picks its bucket (a counting sort, linear), and a
+// bucket holds only the dozen or so faces around one vertex, sorted by the
+// other two ids. On a 51k-tet box about 3x faster (minima 30-37 -> 9-12 ms
+// on a shared host) than one std::sort of all faces by their id triples,
+// with the same result in the same order (by sorted ids, then slot).
 TetAdjacency build_adjacency(const TetMesh& mesh) {
   const std::size_t n = mesh.num_tets();
-  std::vector<FaceSlot> faces;
-  faces.reserve(4 * n);
-  for (std::size_t t = 0; t < n; ++t) {
+  std::size_t n_ids = 0;
+  for (const Tet& tet : mesh.tets)
+    for (VertId v : tet) n_ids = std::max(n_ids, v.index() + 1);
+  // Face f's ids, ascending (branch-free: the middle one is what the
+  // smallest and the largest leave of the sum).
+  const auto sorted_face = [&](std::size_t t, int f) {
+    const auto v = face_vertices(mesh.tets[t], f);
+    const auto a = static_cast<std::uint32_t>(v[0].value), b = static_cast<std::uint32_t>(v[1].value),
+               c = static_cast<std::uint32_t>(v[2].value);
+    const std::uint32_t lo = std::min({a, b, c}), hi = std::max({a, b, c});
+    return std::array<std::uint32_t, 3>{lo, a + b + c - lo - hi, hi};
+  };
+  std::vector<std::uint32_t> start(n_ids + 1, 0);  // bucket of smallest id v: [start[v], start[v + 1])
+  for (std::size_t t = 0; t < n; ++t)
+    for (int f = 0; f < 4; ++f) ++start[sorted_face(t, f)[0] + 1];
+  for (std::size_t v = 0; v < n_ids; ++v) start[v + 1] += start[v];
+  std::vector<FaceSlot> faces(4 * n);
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < n; ++t)
     for (int f = 0; f < 4; ++f) {
-      const auto v = face_vertices(mesh.tets[t], f);
-      std::array<std::int32_t, 3> key = {v[0].value, v[1].value, v[2].value};
-      std::sort(key.begin(), key.end());
-      faces.push_back({key, static_cast<std::int64_t>(4 * t + f)});
+      const auto key = sorted_face(t, f);
+      faces[fill[key[0]]++] = {std::uint64_t{key[1]} << 32 | key[2], static_cast<std::int64_t>(4 * t + f)};
     }
-  }
-  std::sort(faces.begin(), faces.end(),
-            [](const FaceSlot& a, const FaceSlot& b) { return a.key < b.key || (a.key == b.key && a.slot < b.slot); });
 
   TetAdjacency adj;
   adj.neighbors.assign(n, {TetId(), TetId(), TetId(), TetId()});
-  for (std::size_t i = 0; i < faces.size();) {
-    std::size_t j = i + 1;
-    while (j < faces.size() && faces[j].key == faces[i].key) ++j;
-    if (j - i == 1) {
-      const auto t = static_cast<std::size_t>(faces[i].slot / 4);
-      const int f = static_cast<int>(faces[i].slot % 4);
-      adj.boundary.push_back({TetId(t), f, face_vertices(mesh.tets[t], f)});
-    } else if (j - i == 2) {
-      const auto ta = static_cast<std::size_t>(faces[i].slot / 4), tb = static_cast<std::size_t>(faces[i + 1].slot / 4);
-      adj.neighbors[ta][faces[i].slot % 4] = TetId(tb);
-      adj.neighbors[tb][faces[i + 1].slot % 4] = TetId(ta);
-    } else {
-      ++adj.non_manifold_faces;
+  for (std::size_t v = 0; v < n_ids; ++v) {
+    const auto first = faces.begin() + start[v], last = faces.begin() + start[v + 1];
+    std::sort(first, last);
+    for (auto i = first; i != last;) {
+      auto j = i + 1;
+      while (j != last && j->rest == i->rest) ++j;
+      if (j - i == 1) {
+        const auto t = static_cast<std::size_t>(i->slot / 4);
+        const int f = static_cast<int>(i->slot % 4);
+        adj.boundary.push_back({TetId(t), f, face_vertices(mesh.tets[t], f)});
+      } else if (j - i == 2) {
+        const auto ta = static_cast<std::size_t>(i->slot / 4), tb = static_cast<std::size_t>((i + 1)->slot / 4);
+        adj.neighbors[ta][static_cast<std::size_t>(i->slot % 4)] = TetId(tb);
+        adj.neighbors[tb][static_cast<std::size_t>((i + 1)->slot % 4)] = TetId(ta);
+      } else {
+        ++adj.non_manifold_faces;
+      }
+      i = j;
     }
-    i = j;
   }
   return adj;
 }

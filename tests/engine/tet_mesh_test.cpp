@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "engine/input_error.h"
+#include "engine/mesh_loader.h"
 #include "engine/tet_adjacency.h"
 
 namespace mtcut::engine {
@@ -47,6 +50,60 @@ TEST(TetMesh, AdjacencyOfKuhnCube) {
       EXPECT_NE(std::find(back.begin(), back.end(), TetId(t)), back.end());
     }
   EXPECT_EQ(interior, 12u);  // 6 interior faces, seen from both sides
+}
+
+// What build_adjacency must find, by the plainest means: every face slot
+// filed under its sorted vertex ids in an ordered map. Boundary faces come in
+// the map's order (sorted ids), as build_adjacency promises.
+void expect_adjacency_matches_face_map(const TetMesh& mesh) {
+  std::map<std::array<std::int32_t, 3>, std::vector<std::pair<std::size_t, int>>> slots;
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      const auto v = face_vertices(mesh.tets[t], f);
+      std::array<std::int32_t, 3> key = {v[0].value, v[1].value, v[2].value};
+      std::sort(key.begin(), key.end());
+      slots[key].emplace_back(t, f);
+    }
+  std::vector<std::array<TetId, 4>> neighbors(mesh.num_tets(), {TetId(), TetId(), TetId(), TetId()});
+  std::vector<std::pair<std::size_t, int>> boundary;
+  std::size_t non_manifold = 0;
+  for (const auto& [key, on] : slots) {
+    if (on.size() == 1) boundary.push_back(on[0]);
+    if (on.size() == 2) {
+      neighbors[on[0].first][static_cast<std::size_t>(on[0].second)] = TetId(on[1].first);
+      neighbors[on[1].first][static_cast<std::size_t>(on[1].second)] = TetId(on[0].first);
+    }
+    if (on.size() > 2) ++non_manifold;
+  }
+  const TetAdjacency adj = build_adjacency(mesh);
+  EXPECT_EQ(adj.neighbors, neighbors);
+  EXPECT_EQ(adj.non_manifold_faces, non_manifold);
+  ASSERT_EQ(adj.boundary.size(), boundary.size());
+  for (std::size_t i = 0; i < boundary.size(); ++i) {
+    EXPECT_EQ(adj.boundary[i].tet, TetId(boundary[i].first)) << "boundary face " << i;
+    EXPECT_EQ(adj.boundary[i].local_face, boundary[i].second) << "boundary face " << i;
+    EXPECT_EQ(adj.boundary[i].verts, face_vertices(mesh.tets[boundary[i].first], boundary[i].second));
+  }
+}
+
+TEST(TetMesh, AdjacencyMatchesMatchingFacesBySortedIds) {
+  for (const char* spec : {"builtin:box", "builtin:ellipsoid"}) {
+    SCOPED_TRACE(spec);
+    MeshLoadDef load;
+    load.builtin_tets = 3000;
+    expect_adjacency_matches_face_map(load_mesh(spec, load).mesh);
+  }
+  // Three tets on one face (non-manifold), a vertex no tet uses, and ids
+  // out of spatial order.
+  std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.3, 0.3, 1}, {0.3, 0.3, -1}, {0.2, 0.2, 2}, {5, 5, 5}};
+  TetMesh fan = make_tet_mesh(p, {{5, 0, 1, 2}, {0, 1, 2, 3}, {0, 2, 1, 4}}, "fan");
+  expect_adjacency_matches_face_map(fan);
+  EXPECT_EQ(build_adjacency(fan).non_manifold_faces, 1u);  // face 0-1-2, on three tets
+  fan.tets.push_back(fan.tets[1]);  // a duplicate: its other faces pair it with tet 1
+  expect_adjacency_matches_face_map(fan);
+  const TetAdjacency adj = build_adjacency(fan);
+  EXPECT_EQ(adj.non_manifold_faces, 1u);
+  EXPECT_EQ(adj.neighbors[3][0], TetId(1));  // face 1-2-3 (opposite vertex 0)
 }
 
 TEST(TetMesh, MakeTetMeshFixesOrientation) {
