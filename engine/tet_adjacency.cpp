@@ -1,6 +1,7 @@
 #include "engine/tet_adjacency.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "engine/tet_geometry.h"
 
@@ -32,7 +33,10 @@ TetAdjacency build_adjacency(const TetMesh& mesh) {
   const std::size_t n = mesh.num_tets();
   std::size_t n_ids = 0;
   for (const Tet& tet : mesh.tets)
-    for (VertId v : tet) n_ids = std::max(n_ids, v.index() + 1);
+    for (VertId v : tet) {
+      if (!v.valid()) throw std::invalid_argument("build_adjacency: a tet has a negative vertex id");
+      n_ids = std::max(n_ids, v.index() + 1);
+    }
   // Face f's ids, ascending (branch-free: the middle one is what the
   // smallest and the largest leave of the sum).
   const auto sorted_face = [&](std::size_t t, int f) {

@@ -22,6 +22,8 @@ struct TetAdjacency {
   std::size_t non_manifold_faces = 0;           // faces on more than two tets
 };
 
+// Throws std::invalid_argument for a negative vertex id (other ids need not
+// have positions: only the ids are read).
 TetAdjacency build_adjacency(const TetMesh& mesh);
 
 // The vertex ids of face f of tet t, outward oriented.

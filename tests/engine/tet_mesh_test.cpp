@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <stdexcept>
 
 #include "engine/input_error.h"
 #include "engine/mesh_loader.h"
@@ -104,6 +105,8 @@ TEST(TetMesh, AdjacencyMatchesMatchingFacesBySortedIds) {
   const TetAdjacency adj = build_adjacency(fan);
   EXPECT_EQ(adj.non_manifold_faces, 1u);
   EXPECT_EQ(adj.neighbors[3][0], TetId(1));  // face 1-2-3 (opposite vertex 0)
+  fan.tets[2][1] = VertId();  // id -1
+  EXPECT_THROW(build_adjacency(fan), std::invalid_argument);
 }
 
 TEST(TetMesh, MakeTetMeshFixesOrientation) {
