@@ -1,10 +1,18 @@
 #include "app/hid/report_fields.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace mtcut::app::hid {
 
 std::int64_t extract_bits(std::span<const std::uint8_t> bytes, int byte, int bit, int bits, bool is_signed) {
   std::uint64_t raw = 0;
   const int nbytes = (bit + bits + 7) / 8;  // at most 5 for 32 bits at bit 7
+  if (byte < 0 || bit < 0 || bit > 7 || bits < 1 || bits > 32 ||
+      static_cast<std::size_t>(byte + nbytes) > bytes.size())
+    throw std::out_of_range("HID report field: " + std::to_string(bits) + " bits at bit " + std::to_string(bit) +
+                            " of byte " + std::to_string(byte) + " in a " + std::to_string(bytes.size()) +
+                            "-byte report");
   for (int k = nbytes - 1; k >= 0; --k) raw = (raw << 8) | bytes[static_cast<std::size_t>(byte + k)];
   raw = (raw >> bit) & ((std::uint64_t{1} << bits) - 1);
   if (is_signed && (raw >> (bits - 1)) & 1) return static_cast<std::int64_t>(raw) - (std::int64_t{1} << bits);

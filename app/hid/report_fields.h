@@ -23,7 +23,9 @@ struct ReportValues {
 };
 
 // The bit field of `bits` bits starting at bit `bit` of byte `byte`, little-endian,
-// sign-extended when `is_signed`. The caller guarantees the bytes exist.
+// sign-extended when `is_signed`. Throws std::out_of_range when the field
+// does not lie within `bytes` (read_report checks the report's size first,
+// which its profile sized to hold every field) or is not 1-32 bits at bit 0-7.
 std::int64_t extract_bits(std::span<const std::uint8_t> bytes, int byte, int bit, int bits, bool is_signed);
 
 ReportValues read_report(const Profile& profile, std::span<const std::uint8_t> bytes);

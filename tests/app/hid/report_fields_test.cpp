@@ -4,13 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include "app/hid/profile_file.h"
 
 namespace mtcut::app::hid {
 namespace {
 
 TEST(HidReportFields, ExtractsLittleEndianBitFields) {
-  const std::vector<std::uint8_t> b{0x01, 0xa2, 0xfe, 0x5e, 0x01, 0xf0, 0xff, 0x12, 0x34, 0x56, 0x78};
+  const std::vector<std::uint8_t> b{0x01, 0xa2, 0xfe, 0x5e, 0x01, 0xf0, 0xff, 0x12, 0x34, 0x56, 0x78, 0x9a};
   EXPECT_EQ(extract_bits(b, 1, 0, 16, true), -350);
   EXPECT_EQ(extract_bits(b, 1, 0, 16, false), 0xfea2);
   EXPECT_EQ(extract_bits(b, 3, 0, 16, true), 350);
@@ -19,10 +21,15 @@ TEST(HidReportFields, ExtractsLittleEndianBitFields) {
   // A 12-bit field starting at bit 4 of byte 5: 0xfff0 >> 4 = 0xfff, signed -1.
   EXPECT_EQ(extract_bits(b, 5, 4, 12, true), -1);
   EXPECT_EQ(extract_bits(b, 5, 4, 12, false), 0xfff);
-  // 32 bits starting at bit 4 spans five bytes.
-  EXPECT_EQ(extract_bits(b, 7, 4, 32, false), 0x07856341);
+  // 32 bits starting at bit 4 spans five bytes (the fifth's low nibble on top).
+  EXPECT_EQ(extract_bits(b, 7, 4, 32, false), 0xa7856341);
   EXPECT_EQ(extract_bits(b, 7, 0, 32, false), 0x78563412);
   EXPECT_EQ(extract_bits(b, 7, 0, 8, true), 0x12);
+  // A field past the end of the bytes is an error, not a read beyond them.
+  EXPECT_THROW(extract_bits(b, 8, 4, 32, false), std::out_of_range);
+  EXPECT_THROW(extract_bits(b, 12, 0, 1, false), std::out_of_range);
+  EXPECT_THROW(extract_bits(b, 0, 8, 1, false), std::out_of_range);
+  EXPECT_NO_THROW(extract_bits(b, 11, 7, 1, false));
 }
 
 TEST(HidReportFields, RejectsWithAReasonAndNoValues) {
