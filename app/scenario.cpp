@@ -94,6 +94,7 @@ void read_lod(TomlTable& t, sim::LodDef& lod) {
   t.read("near_error", lod.near_error);
   t.read("far_radius", lod.far_radius);
   t.read("far_error", lod.far_error);
+  t.read("background_build", lod.background_build);
   if (lod.near_radius < 0 || lod.far_radius < lod.near_radius)
     t.fail(nullptr, "[lod]: need 0 <= near_radius <= far_radius");
   if (lod.near_error < 0 || lod.far_error < lod.near_error) t.fail(nullptr, "[lod]: need 0 <= near_error <= far_error");

@@ -23,11 +23,7 @@ double ms_since(Clock::time_point start) {
 }
 
 SpringModel build_model(const engine::Mt& mt, const engine::Frontier& frontier, const WorldDef& def) {
-  std::vector<engine::Tet> tets;
-  tets.reserve(frontier.tets().size());
-  for (const auto t : frontier.tets()) tets.push_back(mt.tet(t));
-  return build_spring_model(tets, mt.positions(), def.material,
-                            [&](VertId v) { return def.fixed.contains(v, mt.position(v)); });
+  return ModelInputs::of(mt, frontier, def.material, def.fixed).build();
 }
 
 }  // namespace
@@ -72,13 +68,23 @@ Environment World::environment_for(const ScalpelPose& pose) const {
 // iterations 3.0 -> 1.6 on average). The stepper's history is always that
 // of the current model (it is resized at each step and carried at each
 // rebuild); the explicit integrator has none worth carrying.
-void World::rebuild_model_from(DeformationSnapshot snapshot, const OriginIndex* origins) {
-  model_ = build_model(mt_, frontier_, def_);
+void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, const OriginIndex* origins) {
+  model_ = std::move(model);
   if (def_.integrator.kind == IntegratorKind::kImplicitEuler) snapshot.carried = stepper_.take_warm_start_history();
   std::vector<std::vector<Vec3>> carried;
   state_ = transfer_state(mt_, bvh_, snapshot, model_, origins ? origins->lookup() : OriginLookup{}, nullptr,
                           &carried);
   stepper_.carry_warm_start(std::move(carried));
+}
+
+void World::take_lod_move() {
+  if (!lod_move_) return;
+  DeformationSnapshot snapshot = take_snapshot(mt_, frontier_, model_, state_);
+  SpringModel model = lod_move_->springs.take();
+  std::swap(frontier_, lod_move_->frontier);
+  lod_target_ = std::move(lod_move_->frontier);  // the old frontier's storage, for the next copy
+  lod_move_.reset();
+  adopt_model(std::move(model), std::move(snapshot));
 }
 
 void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
@@ -96,6 +102,7 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     }
     polygons.insert(polygons.end(), std::make_move_iterator(ended.begin()), std::make_move_iterator(ended.end()));
   }
+  if (!polygons.empty() || cutter_.frozen()) take_lod_move();  // the MT is about to change
   if (!polygons.empty()) {
     // Cut in rest space (rest_space_cut.h says why).
     std::vector<Vec3> rest(model_.num_particles());
@@ -116,7 +123,7 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     OriginIndex origins;
     for (const auto& made : result.changes.made_vertices)
       origins.by_vertex[made.id.value] = VertexOrigin{made.source.parents, made.source.weights};
-    rebuild_model_from(std::move(snapshot), &origins);
+    adopt_model(build_model(mt_, frontier_, def_), std::move(snapshot), &origins);
   }
 }
 
@@ -140,11 +147,15 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
   // Stage 3, lod.
   const auto lod_start = Clock::now();
   if (def_.lod.enabled && !cutter_.frozen()) {
-    const std::uint64_t version = frontier_.version();
-    simulated_tets_.assign(frontier_.tets().begin(), frontier_.tets().end());
-    const auto stats = refiner_.update(mt_, error_field(pose.tip), frontier_);
+    take_lod_move();
+    lod_target_ = frontier_;
+    const auto stats = refiner_.update(mt_, error_field(pose.tip), lod_target_);
     m.lod_changes = stats.refined + stats.coarsened;
-    if (frontier_.version() != version) rebuild_model_from(take_snapshot(mt_, simulated_tets_, model_, state_));
+    if (lod_target_.version() != frontier_.version()) {
+      const auto where = def_.lod.background_build ? ModelBuild::Where::kBackground : ModelBuild::Where::kInline;
+      ModelBuild springs(ModelInputs::of(mt_, lod_target_, def_.material, def_.fixed), where);
+      lod_move_.emplace(LodMove{std::move(lod_target_), std::move(springs)});
+    }
   }
   m.lod_ms = ms_since(lod_start);
 

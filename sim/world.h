@@ -15,9 +15,14 @@
 //                fragments it split, rebuild the springs and carry the state
 //                over (cut vertices from their parents); a piece the cut
 //                separates has no spring left to the rest and falls;
-//   3. lod       unless the cutter froze it, move the frontier toward the
-//                error field around the blade tip (incrementally), rebuild
-//                the springs on it and carry the state over;
+//   3. lod       unless the cutter froze it, take the frontier move decided
+//                at the last frame, with its springs (built meanwhile,
+//                sim/model_build.h), and carry the state over; then decide
+//                the next move toward the error field around the blade tip
+//                (incrementally) and start building its springs. A move
+//                takes effect one frame after the blade asked for it, and
+//                the frame's physics overlaps its build. A cut takes any
+//                pending move first, so the MT never changes under one;
 //   4. physics   integrate (guarded: a NaN or an explosion is refused,
 //                counted and the state restored), contacts with floor/blade;
 //   5. metrics   record the frame.
@@ -25,6 +30,7 @@
 // with a still scalpel costs the integration alone.
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -34,6 +40,7 @@
 #include "engine/mt/mt.h"
 #include "engine/mt/selective_refinement.h"
 #include "engine/mt/tet_bvh.h"
+#include "sim/model_build.h"
 #include "sim/scalpel.h"
 #include "sim/spring_model.h"
 #include "sim/spring_state.h"
@@ -97,8 +104,10 @@ class World {
 
  private:
   engine::ErrorField error_field(const Vec3& focus) const;
-  // Rebuilds springs on the current frontier and carries the state from `snapshot`.
-  void rebuild_model_from(struct DeformationSnapshot snapshot, const struct OriginIndex* origins = nullptr);
+  // Makes `model` (built on frontier_) the simulated one, the state carried from `snapshot`.
+  void adopt_model(SpringModel model, struct DeformationSnapshot snapshot, const struct OriginIndex* origins = nullptr);
+  // Takes the pending LOD move, if any: frontier, springs, state.
+  void take_lod_move();
   // Stage 2: queue the blade's sweep over the poses, run the cutter, follow its changes.
   void run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m);
   Environment environment_for(const ScalpelPose& pose) const;
@@ -111,7 +120,13 @@ class World {
   SpringModel model_;
   SpringState state_;
   Stepper stepper_;
-  std::vector<engine::TetId> simulated_tets_;  // the frontier's tets before this frame's LOD move
+  // An LOD move decided at the last frame: the frontier it reaches and its springs.
+  struct LodMove {
+    engine::Frontier frontier;
+    ModelBuild springs;
+  };
+  std::optional<LodMove> lod_move_;
+  engine::Frontier lod_target_;  // where the refiner moves a copy of frontier_ (its storage kept)
   cut::StrokeSweep stroke_;  // the engaged blade's poses, merged into cut polygons
   cut::TimeCriticalCutter cutter_;
   std::size_t pieces_ = 1;

@@ -19,6 +19,10 @@ struct LodDef {
   double near_error = 0.0;   // 0: the finest tets near the blade
   double far_radius = 0.08;
   double far_error = 1.0;    // large: the coarsest tets far away
+  // Build the springs of a frontier move on another core during the
+  // frame's physics, taking them at the next frame (sim/model_build.h);
+  // false builds them inline at the same point: the same bits, slower.
+  bool background_build = true;
 };
 
 // How much cutting a frame may do: in tets (reproducible) or milliseconds.

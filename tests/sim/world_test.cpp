@@ -257,6 +257,82 @@ TEST(World, AStrokeThatTurnsWithinOneFrameIsCutAlongBothLegsNotItsChord) {
   EXPECT_GT(second, 0) << "the second leg was not cut";
 }
 
+// The frontier's tets, ascending.
+std::vector<std::int32_t> sorted_tets(const engine::Frontier& frontier) {
+  std::vector<std::int32_t> ids;
+  for (const auto t : frontier.tets()) ids.push_back(t.value);
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+// A frontier move the blade asks for at one frame is simulated from the
+// next: the frame that decides it still simulates the frontier it started
+// with, and the next one S* of the error field around the blade's tip.
+TEST(World, AFrontierMoveTakesEffectTheFrameAfterTheBladeAskedForIt) {
+  const WorldDef def = organ_def();
+  World world(organ_mt(2000), def);
+  const ScalpelPose pose{Vec3(0.02, 0, 0.06), Vec3(0.02, 0, 0.0), false};  // the tip in the organ
+  const std::vector<std::int32_t> coarsest = sorted_tets(world.frontier());
+  const FrameMetrics& first = world.step(pose);
+  ASSERT_GT(first.lod_changes, 0u);
+  EXPECT_EQ(sorted_tets(world.frontier()), coarsest);
+  EXPECT_EQ(world.model().num_particles(), world.frontier().vertices().size());
+  EXPECT_EQ(world.step(pose).lod_changes, 0u);  // the blade stays: nothing more to move
+
+  engine::ErrorField field;
+  field.focus = pose.tip;
+  field.radius = def.lod.near_radius;
+  field.near_error = def.lod.near_error;
+  field.growth = (def.lod.far_error - def.lod.near_error) / (def.lod.far_radius - def.lod.near_radius);
+  const std::vector<std::int32_t> asked = sorted_tets(engine::extract_frontier(world.mt(), field));
+  EXPECT_NE(asked, coarsest);
+  EXPECT_EQ(sorted_tets(world.frontier()), asked);
+  EXPECT_EQ(world.model().num_particles(), world.frontier().vertices().size());
+  const auto report = world.validate();
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+// The blade sweeps along the organ disengaged, then cuts an L-shaped stroke
+// 2 cm short of the organ's bottom a sample a frame (its turn cuts the first leg
+// while the frontier follows the blade), then lifts: one World builds each frontier move's springs on
+// another core, the other inline. Where a move is taken is fixed by the
+// frame loop (before a cut changes the MT, else at the next frame's LOD
+// stage), not by when its build ends, so both have the same bits every frame.
+TEST(World, SpringsBuiltInTheBackgroundGiveTheInlineBuildsBits) {
+  WorldDef background_def = organ_def();
+  background_def.environment.gravity.setZero();  // the organ keeps its shape: the blade's tip stays in it
+  ASSERT_TRUE(background_def.lod.background_build);
+  WorldDef inline_def = background_def;
+  inline_def.lod.background_build = false;
+  World background(organ_mt(2000), background_def), inline_build(organ_mt(2000), inline_def);
+  const ScalpelPath approach = sweep();
+  std::vector<ScalpelPose> stroke = l_stroke();
+  for (ScalpelPose& p : stroke) p.tip.z() = -0.02;  // the tip, the LOD's focus, in the organ
+  const auto stroke_frames = static_cast<int>(stroke.size());
+  std::size_t moves = 0, cut_tets = 0, cut_while_moving = 0;
+  for (int f = 0; f < 40 + stroke_frames + 20; ++f) {
+    const ScalpelPose pose = f < 40                   ? approach.pose_at(f / 60.0)
+                             : f < 40 + stroke_frames ? stroke[static_cast<std::size_t>(f - 40)]
+                                                      : blade_at(-0.02, 0.0, false);
+    const FrameMetrics a = background.step(pose);
+    const FrameMetrics& b = inline_build.step(pose);
+    ASSERT_EQ(background.state_hash(), inline_build.state_hash()) << "frame " << f;
+    ASSERT_EQ(a.lod_changes, b.lod_changes) << "frame " << f;
+    ASSERT_EQ(a.cut_tets, b.cut_tets) << "frame " << f;
+    ASSERT_EQ(sorted_tets(background.frontier()), sorted_tets(inline_build.frontier())) << "frame " << f;
+    cut_while_moving += a.cuts_started > 0 && moves > 0 && !a.frozen;
+    moves += a.lod_changes;
+    cut_tets += a.cut_tets;
+    const auto report = background.validate();
+    ASSERT_TRUE(report.ok()) << "frame " << f << ": " << report.summary();
+  }
+  EXPECT_GT(moves, 0u);
+  EXPECT_GT(cut_tets, 0u);
+  EXPECT_GT(cut_while_moving, 0u);
+  EXPECT_EQ(background.pieces(), inline_build.pieces());
+  EXPECT_EQ(background.nan_events(), 0u);
+}
+
 TEST(World, AFrameNeedsAPose) {
   World world(organ_mt(2000), organ_def());
   EXPECT_THROW(world.step(std::span<const ScalpelPose>()), std::invalid_argument);

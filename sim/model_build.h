@@ -1,0 +1,53 @@
+#pragma once
+// A spring model built on a frontier's tets, now or on another core while
+// the frame goes on, and taken when the frame loop needs it.
+//
+// Why. Rebuilding the springs is most of an LOD change (the liver scenario:
+// a 26k-tet frontier's model takes ~5.7 ms, its physics ~3.6 ms), and a
+// frontier that follows the scalpel moves every other frame, so those frames
+// ran past a 60 Hz budget (lod_ms p99 ~12 ms, frames ~21 ms). A build reads
+// only its inputs, which it owns (copies of the tets, the rest positions,
+// the material and the fixed region: the MT may be read, cut or grown
+// meanwhile), and it is a pure function of them. So it can run while the
+// frame's physics does and be taken at a point the frame loop fixes: taking
+// waits for it, and a run gives the same bits with the build in the
+// background or inline (World's LOD stage and its test).
+
+#include <future>
+#include <vector>
+
+#include "engine/mt/frontier.h"
+#include "engine/mt/mt.h"
+#include "sim/fixed_region.h"
+#include "sim/material.h"
+#include "sim/spring_model.h"
+
+namespace mtcut::sim {
+
+// What a model is built from, owned.
+struct ModelInputs {
+  std::vector<engine::Tet> tets;    // MT vertex ids
+  std::vector<Vec3> rest_positions;  // (n_mt_vertices) at the time of the copy
+  MaterialDef material;
+  FixedRegion fixed;
+
+  // The frontier's tets and the MT's positions, copied.
+  static ModelInputs of(const engine::Mt& mt, const engine::Frontier& frontier, const MaterialDef& material,
+                        const FixedRegion& fixed);
+  SpringModel build() const;
+};
+
+class ModelBuild {
+ public:
+  enum class Where { kBackground, kInline };
+
+  // Starts building (kInline: when taken, on the taker's thread).
+  ModelBuild(ModelInputs inputs, Where where);
+  // Waits for the model; rethrows what the build threw. Once.
+  SpringModel take() { return model_.get(); }
+
+ private:
+  std::future<SpringModel> model_;
+};
+
+}  // namespace mtcut::sim
