@@ -68,8 +68,10 @@ Environment World::environment_for(const ScalpelPose& pose) const {
 // iterations 3.0 -> 1.6 on average). The stepper's history is always that
 // of the current model (it is resized at each step and carried at each
 // rebuild); the explicit integrator has none worth carrying.
-void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, const OriginIndex* origins) {
+void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, const OriginIndex* origins,
+                        FrameMetrics& m) {
   model_ = std::move(model);
+  ++m.springs_built;
   if (def_.integrator.kind == IntegratorKind::kImplicitEuler) snapshot.carried = stepper_.take_warm_start_history();
   std::vector<std::vector<Vec3>> carried;
   state_ = transfer_state(mt_, bvh_, snapshot, model_, origins ? origins->lookup() : OriginLookup{}, nullptr,
@@ -77,14 +79,14 @@ void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, const O
   stepper_.carry_warm_start(std::move(carried));
 }
 
-void World::take_lod_move() {
+void World::take_lod_move(FrameMetrics& m) {
   if (!lod_move_) return;
   DeformationSnapshot snapshot = take_snapshot(mt_, frontier_, model_, state_);
   SpringModel model = lod_move_->springs.take();
   std::swap(frontier_, lod_move_->frontier);
   lod_target_ = std::move(lod_move_->frontier);  // the old frontier's storage, for the next copy
   lod_move_.reset();
-  adopt_model(std::move(model), std::move(snapshot));
+  adopt_model(std::move(model), std::move(snapshot), nullptr, m);
 }
 
 void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
@@ -102,7 +104,7 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     }
     polygons.insert(polygons.end(), std::make_move_iterator(ended.begin()), std::make_move_iterator(ended.end()));
   }
-  if (!polygons.empty() || cutter_.frozen()) take_lod_move();  // the MT is about to change
+  if (!polygons.empty() || cutter_.frozen()) take_lod_move(m);  // the MT is about to change
   if (!polygons.empty()) {
     // Cut in rest space (rest_space_cut.h says why).
     std::vector<Vec3> rest(model_.num_particles());
@@ -119,11 +121,18 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   cut::follow_cut(mt_, frontier_, result.changes);
   m.cut_tets = result.changes.replaced.size();
   if (result.pieces) pieces_ = result.pieces->count;
-  if (!result.changes.replaced.empty() || !result.changes.made_vertices.empty()) {
+  // Jobs of hidden fragments (a small budget defers them to later frames)
+  // change tets no frontier tet is: the springs stay as they are, where a
+  // rebuild would cost each such frame a model (liver, budget_tets = 5:
+  // ~5 ms a frame for ten frames).
+  const auto tets = frontier_.tets();
+  const bool mesh_changed = tets.size() != snapshot.simulated_tets.size() ||
+                            std::any_of(tets.begin(), tets.end(), [&](engine::TetId t) { return !snapshot.simulated(t); });
+  if (mesh_changed) {
     OriginIndex origins;
     for (const auto& made : result.changes.made_vertices)
       origins.by_vertex[made.id.value] = VertexOrigin{made.source.parents, made.source.weights};
-    adopt_model(build_model(mt_, frontier_, def_), std::move(snapshot), &origins);
+    adopt_model(build_model(mt_, frontier_, def_), std::move(snapshot), &origins, m);
   }
 }
 
@@ -147,7 +156,7 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
   // Stage 3, lod.
   const auto lod_start = Clock::now();
   if (def_.lod.enabled && !cutter_.frozen()) {
-    take_lod_move();
+    take_lod_move(m);
     lod_target_ = frontier_;
     const auto stats = refiner_.update(mt_, error_field(pose.tip), lod_target_);
     m.lod_changes = stats.refined + stats.coarsened;

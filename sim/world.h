@@ -58,6 +58,7 @@ struct FrameMetrics {
   std::size_t cuts_started = 0;    // cut polygons the blade's stroke gave this frame
   std::size_t cut_tets = 0;        // MT tets the cutter replaced this frame
   std::size_t cut_jobs_pending = 0;
+  int springs_built = 0;           // spring models made this frame (a cut's, an LOD move's taken)
   bool frozen = false;             // the cutter held the resolution this frame
   int cg_iterations = 0;
   bool step_refused = false;
@@ -104,10 +105,12 @@ class World {
 
  private:
   engine::ErrorField error_field(const Vec3& focus) const;
-  // Makes `model` (built on frontier_) the simulated one, the state carried from `snapshot`.
-  void adopt_model(SpringModel model, struct DeformationSnapshot snapshot, const struct OriginIndex* origins = nullptr);
+  // Makes `model` (built on frontier_) the simulated one, the state carried from `snapshot`;
+  // counts it in `m` when given.
+  void adopt_model(SpringModel model, struct DeformationSnapshot snapshot, const struct OriginIndex* origins,
+                   FrameMetrics& m);
   // Takes the pending LOD move, if any: frontier, springs, state.
-  void take_lod_move();
+  void take_lod_move(FrameMetrics& m);
   // Stage 2: queue the blade's sweep over the poses, run the cutter, follow its changes.
   void run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m);
   Environment environment_for(const ScalpelPose& pose) const;
