@@ -40,6 +40,14 @@ struct OriginIndex {
   }
 };
 
+struct World::CutSprings {
+  ModelBuild springs;
+  DeformationSnapshot snapshot;  // before the cut
+  OriginIndex origins;           // of the vertices it made
+};
+
+World::~World() = default;
+
 World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt)), bvh_(mt_) {
   frontier_ = def_.lod.enabled ? engine::Frontier::coarsest(mt_) : engine::Frontier::finest(mt_);
   model_ = build_model(mt_, frontier_, def_);
@@ -89,6 +97,12 @@ void World::take_lod_move(FrameMetrics& m) {
   adopt_model(std::move(model), std::move(snapshot), nullptr, m);
 }
 
+void World::take_cut_springs(FrameMetrics& m) {
+  if (!cut_springs_) return;
+  const std::unique_ptr<CutSprings> cut = std::move(cut_springs_);
+  adopt_model(cut->springs.take(), std::move(cut->snapshot), &cut->origins, m);
+}
+
 void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   // The stroke's polygons: a straight part is cut once it ends (the blade
   // turned or left the tissue), on the tissue's current shape. Every pose of
@@ -132,7 +146,9 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     OriginIndex origins;
     for (const auto& made : result.changes.made_vertices)
       origins.by_vertex[made.id.value] = VertexOrigin{made.source.parents, made.source.weights};
-    adopt_model(build_model(mt_, frontier_, def_), std::move(snapshot), &origins, m);
+    const auto where = def_.lod.background_build ? ModelBuild::Where::kBackground : ModelBuild::Where::kInline;
+    ModelBuild springs(ModelInputs::of(mt_, frontier_, def_.material, def_.fixed), where);
+    cut_springs_ = std::make_unique<CutSprings>(CutSprings{std::move(springs), std::move(snapshot), std::move(origins)});
   }
 }
 
@@ -153,20 +169,30 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
   m.frozen = cutter_.frozen();
   m.cut_jobs_pending = cutter_.progress().jobs_pending;
 
-  // Stage 3, lod.
+  // Stage 3, lod. A cut's springs are taken (and timed as the cut's) once
+  // the refiner has run beside their build, before a move's build starts.
   const auto lod_start = Clock::now();
+  double cut_springs_ms = 0;
+  const auto take_cut = [&] {
+    const auto start = Clock::now();
+    take_cut_springs(m);
+    cut_springs_ms += ms_since(start);
+  };
   if (def_.lod.enabled && !cutter_.frozen()) {
-    take_lod_move(m);
+    take_lod_move(m);  // none after a cut: the cut stage took it
     lod_target_ = frontier_;
     const auto stats = refiner_.update(mt_, error_field(pose.tip), lod_target_);
     m.lod_changes = stats.refined + stats.coarsened;
+    take_cut();
     if (lod_target_.version() != frontier_.version()) {
       const auto where = def_.lod.background_build ? ModelBuild::Where::kBackground : ModelBuild::Where::kInline;
       ModelBuild springs(ModelInputs::of(mt_, lod_target_, def_.material, def_.fixed), where);
       lod_move_.emplace(LodMove{std::move(lod_target_), std::move(springs)});
     }
   }
-  m.lod_ms = ms_since(lod_start);
+  take_cut();
+  m.lod_ms = ms_since(lod_start) - cut_springs_ms;
+  m.cut_ms += cut_springs_ms;
 
   // Stage 4, physics.
   const auto physics_start = Clock::now();

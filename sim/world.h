@@ -12,9 +12,10 @@
 //                carry each from the deformed tissue to rest space
 //                (rest_space_cut.h says why), queue it, run the time-critical
 //                cutter within its budget, map the frontier through the
-//                fragments it split, rebuild the springs and carry the state
-//                over (cut vertices from their parents); a piece the cut
-//                separates has no spring left to the rest and falls;
+//                fragments it split and, when its tets changed, start
+//                building the springs on it (taken in stage 3, the state
+//                carried over, cut vertices from their parents); a piece the
+//                cut separates has no spring left to the rest and falls;
 //   3. lod       unless the cutter froze it, take the frontier move decided
 //                at the last frame, with its springs (built meanwhile,
 //                sim/model_build.h), and carry the state over; then decide
@@ -22,7 +23,9 @@
 //                (incrementally) and start building its springs. A move
 //                takes effect one frame after the blade asked for it, and
 //                the frame's physics overlaps its build. A cut takes any
-//                pending move first, so the MT never changes under one;
+//                pending move first, so the MT never changes under one, and
+//                its own springs build while this stage decides the next
+//                move; they are taken before it starts that move's build;
 //   4. physics   integrate (guarded: a NaN or an explosion is refused,
 //                counted and the state restored), contacts with floor/blade;
 //   5. metrics   record the frame.
@@ -30,6 +33,7 @@
 // with a still scalpel costs the integration alone.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -68,6 +72,7 @@ class World {
  public:
   // Takes the MT of the organ (built by the caller from a mesh).
   World(engine::Mt mt, const WorldDef& def);
+  ~World();
 
   // Advances one frame of def.dt with the scalpel at `pose`.
   const FrameMetrics& step(const ScalpelPose& pose);
@@ -111,6 +116,8 @@ class World {
                    FrameMetrics& m);
   // Takes the pending LOD move, if any: frontier, springs, state.
   void take_lod_move(FrameMetrics& m);
+  // Takes the springs of this frame's cut, if building: model and state.
+  void take_cut_springs(FrameMetrics& m);
   // Stage 2: queue the blade's sweep over the poses, run the cutter, follow its changes.
   void run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m);
   Environment environment_for(const ScalpelPose& pose) const;
@@ -129,6 +136,10 @@ class World {
     ModelBuild springs;
   };
   std::optional<LodMove> lod_move_;
+  // The springs of the frontier a cut left, building while the LOD stage
+  // decides the next move (their inputs are copies), taken before the physics.
+  struct CutSprings;
+  std::unique_ptr<CutSprings> cut_springs_;
   engine::Frontier lod_target_;  // where the refiner moves a copy of frontier_ (its storage kept)
   cut::StrokeSweep stroke_;  // the engaged blade's poses, merged into cut polygons
   cut::TimeCriticalCutter cutter_;

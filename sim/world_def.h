@@ -20,8 +20,9 @@ struct LodDef {
   double far_radius = 0.08;
   double far_error = 1.0;    // large: the coarsest tets far away
   // Build the springs of a frontier move on another core during the
-  // frame's physics, taking them at the next frame (sim/model_build.h);
-  // false builds them inline at the same point: the same bits, slower.
+  // frame's physics, taking them at the next frame, and those of a cut
+  // during the LOD stage (sim/model_build.h, World); false builds them
+  // inline at the same points: the same bits, slower.
   bool background_build = true;
 };
 
