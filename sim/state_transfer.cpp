@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "engine/tet_geometry.h"
 
@@ -22,7 +23,7 @@ std::array<double, 4> barycentric(const std::array<Vec3, 4>& c, const Vec3& p) {
   return w;
 }
 
-enum class Source { kKept, kInterpolated, kCut, kExtrapolated };
+enum class Source { kKept, kInterpolated, kWalked, kCut, kExtrapolated };
 
 // A vertex's position, velocity and carried vectors under the snapshot.
 struct Sample {
@@ -50,8 +51,57 @@ struct Sample {
   }
 };
 
+// Scratch of the walks below: a mark per MT tet (the walk's generation when
+// it looked at the tet) and the stack of tets to go on from.
+struct WalkScratch {
+  std::vector<std::uint32_t> mark;
+  std::uint32_t generation = 0;
+  std::vector<TetId> stack;
+
+  void start(std::size_t num_tets, TetId from) {
+    if (mark.size() < num_tets) mark.resize(num_tets, 0);
+    if (++generation == 0) {  // wrapped: forget every mark
+      std::fill(mark.begin(), mark.end(), 0);
+      generation = 1;
+    }
+    mark[from.index()] = generation;
+    stack.assign(1, from);
+  }
+  // First look at t in this walk.
+  bool first_look(TetId t) { return std::exchange(mark[t.index()], generation) != generation; }
+};
+
+// A simulated tet holding p, walked to from `start` (a tet holding p)
+// through tets that hold p and cover the same region one fragment coarser
+// (those the death fragment created: where the old frontier was coarser, a
+// refinement), else one fragment finer (those the birth fragment replaced:
+// a coarsening). Each chain of fragments that the old frontier's set holds
+// ends at one of its tets; a walk gives up after kMaxHolding tets holding p
+// (none: the caller asks the BVH).
+TetId simulated_holder(const engine::Mt& mt, const DeformationSnapshot& snap, TetId start, const Vec3& p,
+                       WalkScratch& walk) {
+  constexpr std::size_t kMaxHolding = 256;
+  for (const bool coarser : {true, false}) {
+    walk.start(mt.num_tets(), start);
+    std::size_t holding = 1;
+    while (!walk.stack.empty() && holding < kMaxHolding) {
+      const TetId t = walk.stack.back();
+      walk.stack.pop_back();
+      if (snap.simulated(t)) return t;
+      const engine::FragId f = coarser ? mt.death(t) : mt.birth(t);
+      if (!f.valid()) continue;
+      for (const TetId next : coarser ? mt.created(f) : mt.replaced(f)) {
+        if (!mt.alive(next) || !walk.first_look(next) || !engine::tet_contains(mt, next, p)) continue;
+        walk.stack.push_back(next);
+        ++holding;
+      }
+    }
+  }
+  return TetId();
+}
+
 Sample sample(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snap, VertId v,
-              const OriginLookup& origins, Source& source, int depth) {
+              const OriginLookup& origins, Source& source, int depth, TetId around = TetId()) {
   Sample out;
   if (v.index() < snap.particle_of.size() && snap.particle_of[v.index()] >= 0) {
     source = Source::kKept;
@@ -72,13 +122,19 @@ Sample sample(const engine::Mt& mt, const engine::TetBvh& bvh, const Deformation
   }
   const Vec3& rest = mt.position(v);
   TetId holder;
-  bvh.for_each_containing(mt, rest, [&](TetId t) {
-    if (!snap.simulated(t)) return true;
-    holder = t;
-    return false;
-  });
+  if (around.valid()) {
+    thread_local WalkScratch walk;  // kept between vertices and transfers
+    holder = simulated_holder(mt, snap, around, rest, walk);
+  }
+  const bool walked = holder.valid();
+  if (!holder.valid())
+    bvh.for_each_containing(mt, rest, [&](TetId t) {
+      if (!snap.simulated(t)) return true;
+      holder = t;
+      return false;
+    });
   if (holder.valid()) {
-    source = Source::kInterpolated;
+    source = walked ? Source::kWalked : Source::kInterpolated;
     const auto w = barycentric(mt.corners(holder), rest);
     for (int k = 0; k < 4; ++k)
       out.add_particle(snap, static_cast<std::size_t>(snap.particle_of[mt.tet(holder)[k].index()]), w[k]);
@@ -137,7 +193,7 @@ std::pair<Vec3, Vec3> sample_vertex(const engine::Mt& mt, const engine::TetBvh& 
 
 SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
                            const SpringModel& model, const OriginLookup& origins, TransferReport* report,
-                           std::vector<std::vector<Vec3>>* carried) {
+                           std::vector<std::vector<Vec3>>* carried, std::span<const engine::TetId> model_tets) {
   if (snapshot.carried.size() > DeformationSnapshot::kMaxCarried)
     throw std::invalid_argument("transfer_state: more carried vectors than DeformationSnapshot::kMaxCarried");
   for (const auto& field : snapshot.carried)
@@ -149,11 +205,20 @@ SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, cons
   state.x.resize(n);
   state.v.resize(n);
   if (carried) carried->assign(snapshot.carried.size(), std::vector<Vec3>(n));
+  // A model tet around each vertex the snapshot does not simulate.
+  std::vector<TetId> around;
+  if (!model_tets.empty()) {
+    around.resize(mt.num_vertices());
+    for (const TetId t : model_tets)
+      for (const VertId u : mt.tet(t))
+        if (u.index() >= snapshot.particle_of.size() || snapshot.particle_of[u.index()] < 0) around[u.index()] = t;
+  }
   Vec3 momentum = Vec3::Zero();
   double free_mass = 0;
   for (std::size_t p = 0; p < n; ++p) {
     Source source;
-    const Sample s = sample(mt, bvh, snapshot, model.particle_vertex[p], origins, source, 0);
+    const VertId u = model.particle_vertex[p];
+    const Sample s = sample(mt, bvh, snapshot, u, origins, source, 0, around.empty() ? TetId() : around[u.index()]);
     state.x[p] = s.x;
     state.v[p] = s.v;
     if (carried)
@@ -161,6 +226,7 @@ SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, cons
     switch (source) {
       case Source::kKept: ++local.kept; break;
       case Source::kInterpolated: ++local.interpolated; break;
+      case Source::kWalked: ++local.interpolated, ++local.walked; break;
       case Source::kCut: ++local.from_cut; break;
       case Source::kExtrapolated: ++local.extrapolated; break;
     }

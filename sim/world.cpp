@@ -83,7 +83,7 @@ void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, const O
   if (def_.integrator.kind == IntegratorKind::kImplicitEuler) snapshot.carried = stepper_.take_warm_start_history();
   std::vector<std::vector<Vec3>> carried;
   state_ = transfer_state(mt_, bvh_, snapshot, model_, origins ? origins->lookup() : OriginLookup{}, nullptr,
-                          &carried);
+                          &carried, frontier_.tets());
   stepper_.carry_warm_start(std::move(carried));
 }
 
