@@ -87,6 +87,11 @@ void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, const O
   stepper_.carry_warm_start(std::move(carried));
 }
 
+ModelBuild World::start_model_build(const engine::Frontier& frontier) const {
+  return ModelBuild(ModelInputs::of(mt_, frontier, def_.material, def_.fixed),
+                    def_.lod.background_build ? ModelBuild::Where::kBackground : ModelBuild::Where::kInline);
+}
+
 void World::take_lod_move(FrameMetrics& m) {
   if (!lod_move_) return;
   DeformationSnapshot snapshot = take_snapshot(mt_, frontier_, model_, state_);
@@ -140,15 +145,15 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   // rebuild would cost each such frame a model (liver, budget_tets = 5:
   // ~5 ms a frame for ten frames).
   const auto tets = frontier_.tets();
-  const bool mesh_changed = tets.size() != snapshot.simulated_tets.size() ||
-                            std::any_of(tets.begin(), tets.end(), [&](engine::TetId t) { return !snapshot.simulated(t); });
+  const auto was_simulated = [&](engine::TetId t) { return snapshot.simulated(t); };
+  const bool mesh_changed =
+      tets.size() != snapshot.simulated_tets.size() || !std::all_of(tets.begin(), tets.end(), was_simulated);
   if (mesh_changed) {
     OriginIndex origins;
     for (const auto& made : result.changes.made_vertices)
       origins.by_vertex[made.id.value] = VertexOrigin{made.source.parents, made.source.weights};
-    const auto where = def_.lod.background_build ? ModelBuild::Where::kBackground : ModelBuild::Where::kInline;
-    ModelBuild springs(ModelInputs::of(mt_, frontier_, def_.material, def_.fixed), where);
-    cut_springs_ = std::make_unique<CutSprings>(CutSprings{std::move(springs), std::move(snapshot), std::move(origins)});
+    cut_springs_ = std::make_unique<CutSprings>(
+        CutSprings{start_model_build(frontier_), std::move(snapshot), std::move(origins)});
   }
 }
 
@@ -185,8 +190,7 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
     m.lod_changes = stats.refined + stats.coarsened;
     take_cut();
     if (lod_target_.version() != frontier_.version()) {
-      const auto where = def_.lod.background_build ? ModelBuild::Where::kBackground : ModelBuild::Where::kInline;
-      ModelBuild springs(ModelInputs::of(mt_, lod_target_, def_.material, def_.fixed), where);
+      ModelBuild springs = start_model_build(lod_target_);
       lod_move_.emplace(LodMove{std::move(lod_target_), std::move(springs)});
     }
   }

@@ -114,6 +114,8 @@ class World {
   // counts it in `m` when given.
   void adopt_model(SpringModel model, struct DeformationSnapshot snapshot, const struct OriginIndex* origins,
                    FrameMetrics& m);
+  // Starts building springs on `frontier` (in the background unless def.lod says inline).
+  ModelBuild start_model_build(const engine::Frontier& frontier) const;
   // Takes the pending LOD move, if any: frontier, springs, state.
   void take_lod_move(FrameMetrics& m);
   // Takes the springs of this frame's cut, if building: model and state.
