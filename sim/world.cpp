@@ -22,10 +22,6 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-SpringModel build_model(const engine::Mt& mt, const engine::Frontier& frontier, const WorldDef& def) {
-  return ModelInputs::of(mt, frontier, def.material, def.fixed).build();
-}
-
 }  // namespace
 
 // The parents of the vertices the cutter made, by vertex id.
@@ -50,7 +46,7 @@ World::~World() = default;
 
 World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt)), bvh_(mt_) {
   frontier_ = def_.lod.enabled ? engine::Frontier::coarsest(mt_) : engine::Frontier::finest(mt_);
-  model_ = build_model(mt_, frontier_, def_);
+  model_ = ModelInputs::of(mt_, frontier_, def_.material, def_.fixed).build();
   state_ = rest_state(model_);
 }
 
@@ -138,6 +134,7 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
                                     : cut::CutBudget::ms(def_.cut_budget.amount);
   auto result = cutter_.run(mt_, bvh_, frontier_, budget);
   cut::follow_cut(mt_, frontier_, result.changes);
+  lod_target_current_ = false;
   m.cut_tets = result.changes.replaced.size();
   if (result.pieces) pieces_ = result.pieces->count;
   // Jobs of hidden fragments (a small budget defers them to later frames)
@@ -185,13 +182,15 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
   };
   if (def_.lod.enabled && !cutter_.frozen()) {
     take_lod_move(m);  // none after a cut: the cut stage took it
-    lod_target_ = frontier_;
+    if (!lod_target_current_) lod_target_ = frontier_;
+    lod_target_current_ = true;
     const auto stats = refiner_.update(mt_, error_field(pose.tip), lod_target_);
     m.lod_changes = stats.refined + stats.coarsened;
     take_cut();
     if (lod_target_.version() != frontier_.version()) {
       ModelBuild springs = start_model_build(lod_target_);
       lod_move_.emplace(LodMove{std::move(lod_target_), std::move(springs)});
+      lod_target_current_ = false;
     }
   }
   take_cut();

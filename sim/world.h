@@ -111,7 +111,7 @@ class World {
  private:
   engine::ErrorField error_field(const Vec3& focus) const;
   // Makes `model` (built on frontier_) the simulated one, the state carried from `snapshot`;
-  // counts it in `m` when given.
+  // counts it in m.springs_built.
   void adopt_model(SpringModel model, struct DeformationSnapshot snapshot, const struct OriginIndex* origins,
                    FrameMetrics& m);
   // Starts building springs on `frontier` (in the background unless def.lod says inline).
@@ -142,7 +142,10 @@ class World {
   // decides the next move (their inputs are copies), taken before the physics.
   struct CutSprings;
   std::unique_ptr<CutSprings> cut_springs_;
-  engine::Frontier lod_target_;  // where the refiner moves a copy of frontier_ (its storage kept)
+  // Where the refiner moves frontier_: a copy of it, made again only after a
+  // move or a cut changed either (a frame with a still blade copies nothing).
+  engine::Frontier lod_target_;
+  bool lod_target_current_ = false;  // lod_target_ equals frontier_
   cut::StrokeSweep stroke_;  // the engaged blade's poses, merged into cut polygons
   cut::TimeCriticalCutter cutter_;
   std::size_t pieces_ = 1;
