@@ -4,10 +4,19 @@
 
 #include "sim/spring_system.h"
 
+#include <algorithm>
+
 #include "sim/lanes2.h"
 
 namespace mtcut::sim {
 namespace {
+
+// A pair of springs' geometry at the state, for the assembly's second step.
+struct PairGeometry {
+  Lanes2 nx, ny, nz;           // unit direction a -> c
+  Lanes2 along, across, root;  // the block's terms, sqrt(along)
+  Lanes2 stretch;              // h k (l - L)
+};
 
 void add_block(Sym3& d, const SpringBlock& blk) {
   const Vec3& w = blk.w;
@@ -70,6 +79,13 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
   // both. a's shares of its diagonal block and of b are summed in
   // registers, lane by lane. A pad lane repeats lane 0's other end with
   // stiffness and damping 0: everything it adds is exactly 0.
+  //
+  // In two steps over up to kChunk pairs at a time: first each pair's
+  // geometry (direction, the two roots and the division), then the rest.
+  // A pair's roots and division form a chain of ~60 cycles that one pair's
+  // ~240 instructions, done in one go, leave the CPU no room to overlap
+  // with the next pair's; a short first loop overlaps the chains of a
+  // particle's pairs. Same operations in the same order: the same bits.
   const std::int32_t *start = rows_.start.data(), *other = rows_.other.data(), *lane_spring = rows_.lane_spring.data();
   BlockPair* blocks = rows_.blocks.data();
   const Vec3 *x = state.x.data(), *v = state.v.data(), *start_x = dv0.data();
@@ -77,81 +93,96 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
   const double *rest_length = model.rest_length.data(), *stiffness = model.stiffness.data(),
                *damping = model.damping.data();
   const Lanes2 one = {1.0, 1.0}, tiny = {kTinyLength2, kTinyLength2};
+  constexpr std::int32_t kChunk = 16;
+  PairGeometry geometry[kChunk];
   for (std::size_t a = 0; a < n; ++a) {
     const Vec3 xa = x[a], va = v[a], sa = start_x[a];
     const bool a_fixed = inv_mass[a] == 0;
     Lanes2 bx = {0, 0}, by = {0, 0}, bz = {0, 0}, rx = {0, 0}, ry = {0, 0}, rz = {0, 0};
     Lanes2 dxx = {0, 0}, dxy = {0, 0}, dxz = {0, 0}, dyy = {0, 0}, dyz = {0, 0}, dzz = {0, 0};
-    for (std::int32_t k = start[a]; k < start[a + 1]; ++k) {
-      const std::int32_t c0 = other[2 * k], s0 = lane_spring[2 * k];
-      const bool pad = lane_spring[2 * k + 1] < 0;
-      const std::int32_t c1 = pad ? c0 : other[2 * k + 1], s1 = pad ? s0 : lane_spring[2 * k + 1];
-      const double on = pad ? 0.0 : 1.0;
-      const Vec3 &x0 = x[c0], &x1 = x[c1], &v0 = v[c0], &v1 = v[c1];
-      const Lanes2 dx = Lanes2{x0.x(), x1.x()} - xa.x(), dy = Lanes2{x0.y(), x1.y()} - xa.y(),
-                   dz = Lanes2{x0.z(), x1.z()} - xa.z();
-      // + kTinyLength2 is exact for any real spring, and a zero-length one
-      // gets n = 0 and adds nothing; t = max(0, 1 - L / l), branch-free.
-      const Lanes2 length2 = dx * dx + dy * dy + dz * dz;
-      const Lanes2 inv_length = one / sqrt_lanes(length2 + tiny);
-      const Lanes2 nx = dx * inv_length, ny = dy * inv_length, nz = dz * inv_length;
-      const Lanes2 k_s = Lanes2{stiffness[s0], on * stiffness[s1]};
-      const Lanes2 rest = Lanes2{rest_length[s0], rest_length[s1]};
-      const Lanes2 t = positive_part(one - rest * inv_length);
-      const Lanes2 along = h * Lanes2{damping[s0], on * damping[s1]} + h2 * k_s * (one - t), across = h2 * k_s * t;
-      const Lanes2 ux = va.x() - Lanes2{v0.x(), v1.x()}, uy = va.y() - Lanes2{v0.y(), v1.y()},
-                   uz = va.z() - Lanes2{v0.z(), v1.z()};
-      const Lanes2 dn = nx * ux + ny * uy + nz * uz;
-      // g_s = h f_a = h (k (l - L) - c n . dv0) n, l = |d|^2 / |d|, minus h^2 J_s dv0.
-      const Lanes2 coef = h * k_s * (length2 * inv_length - rest) - along * dn;
-      const Lanes2 gx = coef * nx - across * ux, gy = coef * ny - across * uy, gz = coef * nz - across * uz;
-      bx += gx;
-      by += gy;
-      bz += gz;
-      b[c0] -= Vec3(gx[0], gy[0], gz[0]);
-      b[c1] -= Vec3(gx[1], gy[1], gz[1]);
-      const Lanes2 root = sqrt_lanes(along);
-      BlockPair blk = {root * nx, root * ny, root * nz, across};
-      // g_s - B_s (x0_a - x0_c).
-      const Vec3 &e0 = start_x[c0], &e1 = start_x[c1];
-      const Lanes2 ex = sa.x() - Lanes2{e0.x(), e1.x()}, ey = sa.y() - Lanes2{e0.y(), e1.y()},
-                   ez = sa.z() - Lanes2{e0.z(), e1.z()};
-      const Lanes2 ew = blk.wx * ex + blk.wy * ey + blk.wz * ez;
-      const Lanes2 hx = gx - (across * ex + ew * blk.wx), hy = gy - (across * ey + ew * blk.wy),
-                   hz = gz - (across * ez + ew * blk.wz);
-      rx += hx;
-      ry += hy;
-      rz += hz;
-      r[c0] -= Vec3(hx[0], hy[0], hz[0]);
-      r[c1] -= Vec3(hx[1], hy[1], hz[1]);
-      const Lanes2 bxx = blk.wx * blk.wx + across, bxy = blk.wx * blk.wy, bxz = blk.wx * blk.wz,
-                   byy = blk.wy * blk.wy + across, byz = blk.wy * blk.wz, bzz = blk.wz * blk.wz + across;
-      dxx += bxx;
-      dxy += bxy;
-      dxz += bxz;
-      dyy += byy;
-      dyz += byz;
-      dzz += bzz;
-      for (int lane = 0; lane < 2; ++lane) {
-        Sym3& d = diag_[static_cast<std::size_t>(lane ? c1 : c0)];
-        d.xx += bxx[lane];
-        d.xy += bxy[lane];
-        d.xz += bxz[lane];
-        d.yy += byy[lane];
-        d.yz += byz[lane];
-        d.zz += bzz[lane];
+    for (std::int32_t first = start[a]; first < start[a + 1]; first += kChunk) {
+      const std::int32_t last = std::min(first + kChunk, start[a + 1]);
+      for (std::int32_t k = first; k < last; ++k) {
+        const std::int32_t c0 = other[2 * k], s0 = lane_spring[2 * k];
+        const bool pad = lane_spring[2 * k + 1] < 0;
+        const std::int32_t c1 = pad ? c0 : other[2 * k + 1], s1 = pad ? s0 : lane_spring[2 * k + 1];
+        const double on = pad ? 0.0 : 1.0;
+        const Vec3 &x0 = x[c0], &x1 = x[c1];
+        const Lanes2 dx = Lanes2{x0.x(), x1.x()} - xa.x(), dy = Lanes2{x0.y(), x1.y()} - xa.y(),
+                     dz = Lanes2{x0.z(), x1.z()} - xa.z();
+        // + kTinyLength2 is exact for any real spring, and a zero-length one
+        // gets n = 0 and adds nothing; t = max(0, 1 - L / l), branch-free.
+        const Lanes2 length2 = dx * dx + dy * dy + dz * dz;
+        const Lanes2 inv_length = one / sqrt_lanes(length2 + tiny);
+        const Lanes2 k_s = Lanes2{stiffness[s0], on * stiffness[s1]};
+        const Lanes2 rest = Lanes2{rest_length[s0], rest_length[s1]};
+        const Lanes2 t = positive_part(one - rest * inv_length);
+        PairGeometry& g = geometry[k - first];
+        g.nx = dx * inv_length, g.ny = dy * inv_length, g.nz = dz * inv_length;
+        g.along = h * Lanes2{damping[s0], on * damping[s1]} + h2 * k_s * (one - t);
+        g.across = h2 * k_s * t;
+        g.stretch = h * k_s * (length2 * inv_length - rest);  // h k (l - L), l = |d|^2 / |d|
+        g.root = sqrt_lanes(g.along);
       }
-      if (a_fixed || inv_mass[c0] == 0 || inv_mass[c1] == 0) [[unlikely]] {  // masked: fixed rows decouple
+      for (std::int32_t k = first; k < last; ++k) {
+        const PairGeometry& g = geometry[k - first];
+        const Lanes2 nx = g.nx, ny = g.ny, nz = g.nz, along = g.along, across = g.across;
+        const std::int32_t c0 = other[2 * k];
+        const std::int32_t c1 = lane_spring[2 * k + 1] < 0 ? c0 : other[2 * k + 1];
+        const Vec3 &v0 = v[c0], &v1 = v[c1];
+        const Lanes2 ux = va.x() - Lanes2{v0.x(), v1.x()}, uy = va.y() - Lanes2{v0.y(), v1.y()},
+                     uz = va.z() - Lanes2{v0.z(), v1.z()};
+        const Lanes2 dn = nx * ux + ny * uy + nz * uz;
+        // g_s = h f_a = h (k (l - L) - c n . dv0) n, minus h^2 J_s dv0.
+        const Lanes2 coef = g.stretch - along * dn;
+        const Lanes2 gx = coef * nx - across * ux, gy = coef * ny - across * uy, gz = coef * nz - across * uz;
+        bx += gx;
+        by += gy;
+        bz += gz;
+        b[c0] -= Vec3(gx[0], gy[0], gz[0]);
+        b[c1] -= Vec3(gx[1], gy[1], gz[1]);
+        BlockPair blk = {g.root * nx, g.root * ny, g.root * nz, across};
+        // g_s - B_s (x0_a - x0_c).
+        const Vec3 &e0 = start_x[c0], &e1 = start_x[c1];
+        const Lanes2 ex = sa.x() - Lanes2{e0.x(), e1.x()}, ey = sa.y() - Lanes2{e0.y(), e1.y()},
+                     ez = sa.z() - Lanes2{e0.z(), e1.z()};
+        const Lanes2 ew = blk.wx * ex + blk.wy * ey + blk.wz * ez;
+        const Lanes2 hx = gx - (across * ex + ew * blk.wx), hy = gy - (across * ey + ew * blk.wy),
+                     hz = gz - (across * ez + ew * blk.wz);
+        rx += hx;
+        ry += hy;
+        rz += hz;
+        r[c0] -= Vec3(hx[0], hy[0], hz[0]);
+        r[c1] -= Vec3(hx[1], hy[1], hz[1]);
+        const Lanes2 bxx = blk.wx * blk.wx + across, bxy = blk.wx * blk.wy, bxz = blk.wx * blk.wz,
+                     byy = blk.wy * blk.wy + across, byz = blk.wy * blk.wz, bzz = blk.wz * blk.wz + across;
+        dxx += bxx;
+        dxy += bxy;
+        dxz += bxz;
+        dyy += byy;
+        dyz += byz;
+        dzz += bzz;
         for (int lane = 0; lane < 2; ++lane) {
-          const auto c = static_cast<std::size_t>(lane ? c1 : c0);
-          if (!a_fixed && inv_mass[c] != 0) continue;
-          const SpringBlock one_block{Vec3(blk.wx[lane], blk.wy[lane], blk.wz[lane]), blk.across[lane]};
-          if (!a_fixed) add_block(own_[a], one_block);
-          if (inv_mass[c] != 0) add_block(own_[c], one_block);
-          blk.wx[lane] = blk.wy[lane] = blk.wz[lane] = blk.across[lane] = 0;
+          Sym3& d = diag_[static_cast<std::size_t>(lane ? c1 : c0)];
+          d.xx += bxx[lane];
+          d.xy += bxy[lane];
+          d.xz += bxz[lane];
+          d.yy += byy[lane];
+          d.yz += byz[lane];
+          d.zz += bzz[lane];
         }
+        if (a_fixed || inv_mass[c0] == 0 || inv_mass[c1] == 0) [[unlikely]] {  // masked: fixed rows decouple
+          for (int lane = 0; lane < 2; ++lane) {
+            const auto c = static_cast<std::size_t>(lane ? c1 : c0);
+            if (!a_fixed && inv_mass[c] != 0) continue;
+            const SpringBlock one_block{Vec3(blk.wx[lane], blk.wy[lane], blk.wz[lane]), blk.across[lane]};
+            if (!a_fixed) add_block(own_[a], one_block);
+            if (inv_mass[c] != 0) add_block(own_[c], one_block);
+            blk.wx[lane] = blk.wy[lane] = blk.wz[lane] = blk.across[lane] = 0;
+          }
+        }
+        blocks[k] = blk;
       }
-      blocks[k] = blk;
     }
     b[a] += Vec3(bx[0] + bx[1], by[0] + by[1], bz[0] + bz[1]);
     r[a] += Vec3(rx[0] + rx[1], ry[0] + ry[1], rz[0] + rz[1]);
