@@ -94,8 +94,25 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
                *damping = model.damping.data();
   const Lanes2 one = {1.0, 1.0}, tiny = {kTinyLength2, kTinyLength2};
   constexpr std::int32_t kChunk = 16;
+  constexpr std::size_t kAhead = 4;  // 2 to 8 measured alike
   PairGeometry geometry[kChunk];
   for (std::size_t a = 0; a < n; ++a) {
+    // The other ends' entries of particle a + kAhead, asked for now: within
+    // a row they are scattered over the particles ahead (not a stream the
+    // CPU's prefetcher follows), and after a solve they are out of L2.
+    if (a + kAhead < n) {
+      for (std::int32_t k = start[a + kAhead]; k < start[a + kAhead + 1]; ++k) {
+        for (int lane = 0; lane < 2; ++lane) {
+          const std::int32_t c = other[2 * k + lane];  // n for a pad: one past the end, never read
+          __builtin_prefetch(x + c);
+          __builtin_prefetch(v + c);
+          __builtin_prefetch(start_x + c);
+          __builtin_prefetch(b + c, 1);
+          __builtin_prefetch(r.data() + c, 1);
+          __builtin_prefetch(diag_.data() + c, 1);
+        }
+      }
+    }
     const Vec3 xa = x[a], va = v[a], sa = start_x[a];
     const bool a_fixed = inv_mass[a] == 0;
     Lanes2 bx = {0, 0}, by = {0, 0}, bz = {0, 0}, rx = {0, 0}, ry = {0, 0}, rz = {0, 0};
