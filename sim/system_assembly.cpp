@@ -81,11 +81,12 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
   // stiffness and damping 0: everything it adds is exactly 0.
   //
   // In two steps over up to kChunk pairs at a time: first each pair's
-  // geometry (direction, the two roots and the division), then the rest.
-  // A pair's roots and division form a chain of ~60 cycles that one pair's
-  // ~240 instructions, done in one go, leave the CPU no room to overlap
-  // with the next pair's; a short first loop overlaps the chains of a
-  // particle's pairs. Same operations in the same order: the same bits.
+  // geometry (gathered positions, direction, the two roots and the
+  // division), then the rest. One pair's ~240 instructions in one go leave
+  // the CPU's out-of-order window little room to overlap a pair's loads and
+  // roots with the next pair's; a short first loop overlaps them across a
+  // particle's pairs (the bench box's assembly: 1.91 -> 1.65 ms with warm
+  // caches, ~4% after a solve). Same operations in the same order: same bits.
   const std::int32_t *start = rows_.start.data(), *other = rows_.other.data(), *lane_spring = rows_.lane_spring.data();
   BlockPair* blocks = rows_.blocks.data();
   const Vec3 *x = state.x.data(), *v = state.v.data(), *start_x = dv0.data();
