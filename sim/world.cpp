@@ -134,7 +134,6 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
                                     : cut::CutBudget::ms(def_.cut_budget.amount);
   auto result = cutter_.run(mt_, bvh_, frontier_, budget);
   cut::follow_cut(mt_, frontier_, result.changes);
-  lod_target_current_ = false;
   m.cut_tets = result.changes.replaced.size();
   if (result.pieces) pieces_ = result.pieces->count;
   // Jobs of hidden fragments (a small budget defers them to later frames)
@@ -182,15 +181,15 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
   };
   if (def_.lod.enabled && !cutter_.frozen()) {
     take_lod_move(m);  // none after a cut: the cut stage took it
-    if (!lod_target_current_) lod_target_ = frontier_;
-    lod_target_current_ = true;
+    // A frontier's version names its state (a copy shares it while
+    // identical): a still blade and no cut leave the copy as it is.
+    if (lod_target_.version() != frontier_.version()) lod_target_ = frontier_;
     const auto stats = refiner_.update(mt_, error_field(pose.tip), lod_target_);
     m.lod_changes = stats.refined + stats.coarsened;
     take_cut();
     if (lod_target_.version() != frontier_.version()) {
       ModelBuild springs = start_model_build(lod_target_);
       lod_move_.emplace(LodMove{std::move(lod_target_), std::move(springs)});
-      lod_target_current_ = false;
     }
   }
   take_cut();

@@ -142,10 +142,10 @@ class World {
   // decides the next move (their inputs are copies), taken before the physics.
   struct CutSprings;
   std::unique_ptr<CutSprings> cut_springs_;
-  // Where the refiner moves frontier_: a copy of it, made again only after a
-  // move or a cut changed either (a frame with a still blade copies nothing).
+  // Where the refiner moves frontier_: a copy of it, made again only when
+  // their versions differ, after a move or a cut (a frame with a still
+  // blade copies nothing).
   engine::Frontier lod_target_;
-  bool lod_target_current_ = false;  // lod_target_ equals frontier_
   cut::StrokeSweep stroke_;  // the engaged blade's poses, merged into cut polygons
   cut::TimeCriticalCutter cutter_;
   std::size_t pieces_ = 1;
