@@ -95,6 +95,8 @@ void read_lod(TomlTable& t, sim::LodDef& lod) {
   t.read("far_radius", lod.far_radius);
   t.read("far_error", lod.far_error);
   t.read("background_build", lod.background_build);
+  t.read("build_frames", lod.build_frames);
+  if (lod.build_frames < 1) t.fail(t.node("build_frames"), "'lod.build_frames' must be at least 1");
   if (lod.near_radius < 0 || lod.far_radius < lod.near_radius)
     t.fail(nullptr, "[lod]: need 0 <= near_radius <= far_radius");
   if (lod.near_error < 0 || lod.far_error < lod.near_error) t.fail(nullptr, "[lod]: need 0 <= near_error <= far_error");

@@ -180,16 +180,19 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
     cut_springs_ms += ms_since(start);
   };
   if (def_.lod.enabled && !cutter_.frozen()) {
-    take_lod_move(m);  // none after a cut: the cut stage took it
-    // A frontier's version names its state (a copy shares it while
-    // identical): a still blade and no cut leave the copy as it is.
-    if (lod_target_.version() != frontier_.version()) lod_target_ = frontier_;
-    const auto stats = refiner_.update(mt_, error_field(pose.tip), lod_target_);
-    m.lod_changes = stats.refined + stats.coarsened;
-    take_cut();
-    if (lod_target_.version() != frontier_.version()) {
-      ModelBuild springs = start_model_build(lod_target_);
-      lod_move_.emplace(LodMove{std::move(lod_target_), std::move(springs)});
+    if (lod_move_ && frame_ >= lod_move_->take_at) take_lod_move(m);  // none after a cut: the cut stage took it
+    if (!lod_move_) {
+      // A frontier's version names its state (a copy shares it while
+      // identical): a still blade and no cut leave the copy as it is.
+      if (lod_target_.version() != frontier_.version()) lod_target_ = frontier_;
+      const auto stats = refiner_.update(mt_, error_field(pose.tip), lod_target_);
+      m.lod_changes = stats.refined + stats.coarsened;
+      take_cut();
+      if (lod_target_.version() != frontier_.version()) {
+        ModelBuild springs = start_model_build(lod_target_);
+        const auto take_at = frame_ + static_cast<std::uint64_t>(std::max(1, def_.lod.build_frames));
+        lod_move_.emplace(LodMove{std::move(lod_target_), std::move(springs), take_at});
+      }
     }
   }
   take_cut();

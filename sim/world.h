@@ -17,15 +17,16 @@
 //                carried over, cut vertices from their parents); a piece the
 //                cut separates has no spring left to the rest and falls;
 //   3. lod       unless the cutter froze it, take the frontier move decided
-//                at the last frame, with its springs (built meanwhile,
-//                sim/model_build.h), and carry the state over; then decide
-//                the next move toward the error field around the blade tip
-//                (incrementally) and start building its springs. A move
-//                takes effect one frame after the blade asked for it, and
-//                the frame's physics overlaps its build. A cut takes any
-//                pending move first, so the MT never changes under one, and
-//                its own springs build while this stage decides the next
-//                move; they are taken before it starts that move's build;
+//                def.lod.build_frames ago, with its springs (built
+//                meanwhile, sim/model_build.h), and carry the state over;
+//                then, with no move pending, decide the next one toward the
+//                error field around the blade tip (incrementally) and start
+//                building its springs. A move takes effect build_frames
+//                after the blade asked for it, and those frames' physics
+//                overlaps its build. A cut takes any pending move first, so
+//                the MT never changes under one, and its own springs build
+//                while this stage decides the next move; they are taken
+//                before it starts that move's build;
 //   4. physics   integrate (guarded: a NaN or an explosion is refused,
 //                counted and the state restored), contacts with floor/blade;
 //   5. metrics   record the frame.
@@ -132,10 +133,12 @@ class World {
   SpringModel model_;
   SpringState state_;
   Stepper stepper_;
-  // An LOD move decided at the last frame: the frontier it reaches and its springs.
+  // An LOD move decided at an earlier frame: the frontier it reaches, its
+  // springs, and the frame whose LOD stage takes it.
   struct LodMove {
     engine::Frontier frontier;
     ModelBuild springs;
+    std::uint64_t take_at = 0;
   };
   std::optional<LodMove> lod_move_;
   // The springs of the frontier a cut left, building while the LOD stage

@@ -20,10 +20,19 @@ struct LodDef {
   double far_radius = 0.08;
   double far_error = 1.0;    // large: the coarsest tets far away
   // Build the springs of a frontier move on another core during the
-  // frame's physics, taking them at the next frame, and those of a cut
+  // frames' physics, taking them build_frames later, and those of a cut
   // during the LOD stage (sim/model_build.h, World); false builds them
   // inline at the same points: the same bits, slower.
   bool background_build = true;
+  // The frames a move's springs have to build: the move the blade asks for
+  // at frame k is taken at frame k + build_frames (sooner when a cut comes)
+  // and the next one is decided then. Why 2: a 26k-tet frontier's build
+  // (~5-7 ms on a core that shares its cache with the physics) outlasts one
+  // liver frame's physics (~3.5 ms), so with 1 the frame taking a move
+  // waited out the rest (lod_ms p95 ~3.9 ms); two frames' physics cover it.
+  // The price: the frontier follows the blade two frames late, at most
+  // every other frame.
+  int build_frames = 2;
 };
 
 // How much cutting a frame may do: in tets (reproducible) or milliseconds.

@@ -98,6 +98,8 @@ TEST_F(RunCommand, BadScenariosGiveOneLineWithFileAndLine) {
   expect_rejected(variant("[lod]\n", "[lod]\nnear_radiu = 0.01\n"), "unknown key 'lod.near_radiu'");
   expect_rejected(variant("[lod]\n", "[lod]\nbackground_build = 1\n"),
                   "'lod.background_build' must be true or false");
+  expect_rejected(variant("[lod]\n", "[lod]\nbuild_frames = 0\n"), "'lod.build_frames' must be at least 1");
+  expect_rejected(variant("[lod]\n", "[lod]\nbuild_frames = 1.5\n"), "'lod.build_frames' must be an integer");
   expect_rejected(variant("tets = 8000", "tets = \"many\""), "'mesh.tets' must be an integer");
   expect_rejected(variant("source = \"builtin:ellipsoid\"", "source = \"no_such_organ.obj\""), "does not exist");
   expect_rejected(variant("dt = 0.016666666666666666", "dt = -0.01"), "'run.dt' must be positive");

@@ -265,22 +265,32 @@ std::vector<std::int32_t> sorted_tets(const engine::Frontier& frontier) {
   return ids;
 }
 
-// A frontier move the blade asks for at one frame is simulated from the
-// next: the frame that decides it still simulates the frontier it started
-// with, and the next one S* of the error field around the blade's tip.
-TEST(World, AFrontierMoveTakesEffectTheFrameAfterTheBladeAskedForIt) {
-  const WorldDef def = organ_def();
+// A frontier move the blade asks for at one frame is simulated from
+// def.lod.build_frames later: the frames in between still simulate the
+// frontier it started with and decide no other move, and the frame that
+// takes it simulates S* of the error field around the blade's tip.
+class WorldMoveLatency : public ::testing::TestWithParam<int> {};
+
+TEST_P(WorldMoveLatency, AFrontierMoveTakesEffectBuildFramesAfterTheBladeAskedForIt) {
+  WorldDef def = organ_def();
+  def.lod.build_frames = GetParam();
   World world(organ_mt(2000), def);
   const ScalpelPose pose{Vec3(0.02, 0, 0.06), Vec3(0.02, 0, 0.0), false};  // the tip in the organ
   const std::vector<std::int32_t> coarsest = sorted_tets(world.frontier());
   const FrameMetrics& first = world.step(pose);
   ASSERT_GT(first.lod_changes, 0u);
   EXPECT_EQ(first.springs_built, 0);
+  for (int f = 1; f < def.lod.build_frames; ++f) {
+    const FrameMetrics& waiting = world.step(pose);
+    EXPECT_EQ(waiting.springs_built, 0) << "frame " << f;
+    EXPECT_EQ(waiting.lod_changes, 0u) << "frame " << f << ": a move is pending";
+    EXPECT_EQ(sorted_tets(world.frontier()), coarsest) << "frame " << f;
+    EXPECT_EQ(world.model().num_particles(), world.frontier().vertices().size());
+  }
   EXPECT_EQ(sorted_tets(world.frontier()), coarsest);
-  EXPECT_EQ(world.model().num_particles(), world.frontier().vertices().size());
-  const FrameMetrics& second = world.step(pose);
-  EXPECT_EQ(second.springs_built, 1);
-  EXPECT_EQ(second.lod_changes, 0u);  // the blade stays: nothing more to move
+  const FrameMetrics& taken = world.step(pose);
+  EXPECT_EQ(taken.springs_built, 1);
+  EXPECT_EQ(taken.lod_changes, 0u);  // the blade stays: nothing more to move
 
   engine::ErrorField field;
   field.focus = pose.tip;
@@ -294,6 +304,8 @@ TEST(World, AFrontierMoveTakesEffectTheFrameAfterTheBladeAskedForIt) {
   const auto report = world.validate();
   EXPECT_TRUE(report.ok()) << report.summary();
 }
+
+INSTANTIATE_TEST_SUITE_P(BuildFrames, WorldMoveLatency, ::testing::Values(1, 2, 3));
 
 // The blade sweeps along the organ disengaged, then cuts an L-shaped stroke
 // 2 cm short of the organ's bottom a sample a frame (its turn cuts the first leg
