@@ -18,8 +18,8 @@ SpringModel ModelInputs::build() const {
                             [this](VertId v) { return fixed.contains(v, rest_positions[v.index()]); });
 }
 
-ModelBuild::ModelBuild(ModelInputs inputs, Where where)
-    : model_(std::async(where == Where::kBackground ? std::launch::async : std::launch::deferred,
-                        [in = std::move(inputs)] { return in.build(); })) {}
+ModelBuild::ModelBuild(ModelInputs inputs, WorkerThread* worker)
+    : model_(worker ? worker->submit([in = std::move(inputs)] { return in.build(); })
+                    : std::async(std::launch::deferred, [in = std::move(inputs)] { return in.build(); })) {}
 
 }  // namespace mtcut::sim

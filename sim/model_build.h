@@ -11,7 +11,9 @@
 // meanwhile), and it is a pure function of them. So it can run while the
 // frame's physics does and be taken at a point the frame loop fixes: taking
 // waits for it, and a run gives the same bits with the build in the
-// background or inline (World's LOD stage and its test).
+// background or inline (World's LOD stage and its test). Background builds
+// run on one long-lived WorkerThread (worker_thread.h says why not a thread
+// per build).
 
 #include <future>
 #include <vector>
@@ -21,6 +23,7 @@
 #include "sim/fixed_region.h"
 #include "sim/material.h"
 #include "sim/spring_model.h"
+#include "sim/worker_thread.h"
 
 namespace mtcut::sim {
 
@@ -39,10 +42,8 @@ struct ModelInputs {
 
 class ModelBuild {
  public:
-  enum class Where { kBackground, kInline };
-
-  // Starts building (kInline: when taken, on the taker's thread).
-  ModelBuild(ModelInputs inputs, Where where);
+  // Starts building on `worker`, or, without one, when taken, on the taker's thread.
+  ModelBuild(ModelInputs inputs, WorkerThread* worker);
   // Waits for the model; rethrows what the build threw. Once.
   SpringModel take() { return model_.get(); }
 

@@ -45,6 +45,7 @@ struct World::CutSprings {
 World::~World() = default;
 
 World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt)), bvh_(mt_) {
+  if (def_.lod.background_build) builder_ = std::make_unique<WorkerThread>();
   frontier_ = def_.lod.enabled ? engine::Frontier::coarsest(mt_) : engine::Frontier::finest(mt_);
   model_ = ModelInputs::of(mt_, frontier_, def_.material, def_.fixed).build();
   state_ = rest_state(model_);
@@ -84,8 +85,7 @@ void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, const O
 }
 
 ModelBuild World::start_model_build(const engine::Frontier& frontier) const {
-  return ModelBuild(ModelInputs::of(mt_, frontier, def_.material, def_.fixed),
-                    def_.lod.background_build ? ModelBuild::Where::kBackground : ModelBuild::Where::kInline);
+  return ModelBuild(ModelInputs::of(mt_, frontier, def_.material, def_.fixed), builder_.get());
 }
 
 void World::take_lod_move(FrameMetrics& m) {

@@ -133,6 +133,10 @@ class World {
   SpringModel model_;
   SpringState state_;
   Stepper stepper_;
+  // The thread that builds the springs of moves and cuts (null: inline,
+  // def.lod.background_build false). Declared before the builds it runs, so
+  // it outlives them and finishes what they queued before it joins.
+  std::unique_ptr<WorkerThread> builder_;
   // An LOD move decided at an earlier frame: the frontier it reaches, its
   // springs, and the frame whose LOD stage takes it.
   struct LodMove {
