@@ -205,13 +205,21 @@ SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, cons
   state.x.resize(n);
   state.v.resize(n);
   if (carried) carried->assign(snapshot.carried.size(), std::vector<Vec3>(n));
-  // A model tet around each vertex the snapshot does not simulate.
+  // A model tet around each vertex the snapshot does not simulate, where
+  // one of them is to be found in an old tet (not made by a cut): a pass
+  // over the model's tets (~0.25 ms at 27k) that a cut or a coarsening
+  // move does not need.
+  const auto simulated = [&](VertId u) {
+    return u.index() < snapshot.particle_of.size() && snapshot.particle_of[u.index()] >= 0;
+  };
+  const bool some_to_find = std::any_of(model.particle_vertex.begin(), model.particle_vertex.end(),
+                                        [&](VertId u) { return !simulated(u) && !(origins && origins(u)); });
   std::vector<TetId> around;
-  if (!model_tets.empty()) {
+  if (!model_tets.empty() && some_to_find) {
     around.resize(mt.num_vertices());
     for (const TetId t : model_tets)
       for (const VertId u : mt.tet(t))
-        if (u.index() >= snapshot.particle_of.size() || snapshot.particle_of[u.index()] < 0) around[u.index()] = t;
+        if (!simulated(u)) around[u.index()] = t;
   }
   Vec3 momentum = Vec3::Zero();
   double free_mass = 0;
