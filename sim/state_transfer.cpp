@@ -212,10 +212,11 @@ SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, cons
   const auto simulated = [&](VertId u) {
     return u.index() < snapshot.particle_of.size() && snapshot.particle_of[u.index()] >= 0;
   };
-  const bool some_to_find = std::any_of(model.particle_vertex.begin(), model.particle_vertex.end(),
-                                        [&](VertId u) { return !simulated(u) && !(origins && origins(u)); });
+  const bool some_to_find =
+      !model_tets.empty() && std::any_of(model.particle_vertex.begin(), model.particle_vertex.end(),
+                                         [&](VertId u) { return !simulated(u) && !(origins && origins(u)); });
   std::vector<TetId> around;
-  if (!model_tets.empty() && some_to_find) {
+  if (some_to_find) {
     around.resize(mt.num_vertices());
     for (const TetId t : model_tets)
       for (const VertId u : mt.tet(t))
