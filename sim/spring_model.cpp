@@ -4,44 +4,22 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <tuple>
+#include <stdexcept>
+#include <string>
 
 #include "engine/tet_geometry.h"
+#include "sim/spring_model_parts.h"
 
 namespace mtcut::sim {
 namespace {
 
-// Spreads the low 21 bits of x to every third bit.
-std::uint64_t spread_bits(std::uint64_t x) {
-  x &= 0x1fffff;
-  x = (x | x << 32) & 0x1f00000000ffffULL;
-  x = (x | x << 16) & 0x1f0000ff0000ffULL;
-  x = (x | x << 8) & 0x100f00f00f00f00fULL;
-  x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
-  x = (x | x << 2) & 0x1249249249249249ULL;
-  return x;
-}
-
-// The Morton code of p quantised to 21 bits per axis in the box [lo, hi].
-std::uint64_t morton_key(const engine::Vec3& p, const engine::Vec3& lo, const engine::Vec3& hi) {
-  std::uint64_t key = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double extent = hi[k] - lo[k];
-    const double unit = extent > 0 ? (p[k] - lo[k]) / extent : 0.0;
-    key |= spread_bits(static_cast<std::uint64_t>(std::clamp(unit, 0.0, 1.0) * 2097151.0)) << k;
-  }
-  return key;
-}
-
 // One spring per distinct edge of the tets (particle indices), a < b,
-// sorted by (a, b), each with Van Gelder's stiffness from its tets' volumes
-// summed in tet order (well defined, so the model is the same bits whatever
-// sort a library brings). The edge uses are bucketed by a (a counting sort:
-// tet order kept within a bucket); each bucket is merged by b through
-// slot_of, then sorted by b (a handful of springs per particle). O(n + m):
-// a comparison sort of all the uses took most of a model rebuild.
+// sorted by (a, b), each with its exact volume sum and use count. The edge
+// uses are bucketed by a (a counting sort); each bucket is merged by b
+// through slot_of, then sorted by b (a handful of springs per particle).
+// O(n + m): a comparison sort of all the uses took most of a model rebuild.
 void add_springs(const std::vector<std::array<std::int32_t, 4>>& tets, const std::vector<double>& volumes,
-                 const MaterialDef& material, SpringModel& model) {
+                 SpringModel& model) {
   const std::size_t n = model.rest_position.size();
   std::vector<std::int32_t> bucket_start(n + 1, 0);  // (n + 1) particle a's uses: [start[a], start[a + 1])
   for (const auto& p : tets)
@@ -54,49 +32,41 @@ void add_springs(const std::vector<std::array<std::int32_t, 4>>& tets, const std
   std::vector<Use> uses(6 * tets.size());  // by lower end, in tet order
   {
     std::vector<std::int32_t> next(bucket_start.begin(), bucket_start.end() - 1);
-    // Each use's volume, scaled by |e|^2 / (kShortEdgeFloor L_T)^2 when its
-    // edge is shorter than kShortEdgeFloor times the tet's longest edge L_T:
-    // the sum over |e|^2 is then sum vol(T) / max(|e|, kShortEdgeFloor L_T)^2.
-    const double floor2 = kShortEdgeFloor * kShortEdgeFloor;
     for (std::size_t t = 0; t < tets.size(); ++t) {
-      std::array<double, 6> length2{};
-      double longest2 = 0;
-      for (std::size_t k = 0; k < 6; ++k) {
-        const auto& e = engine::kTetEdges[k];
-        length2[k] = (model.rest_position[static_cast<std::size_t>(tets[t][e[0]])] -
-                      model.rest_position[static_cast<std::size_t>(tets[t][e[1]])])
-                         .squaredNorm();
-        longest2 = std::max(longest2, length2[k]);
-      }
-      const double shortest2 = floor2 * longest2;
+      std::array<Vec3, 4> corners;
+      for (int k = 0; k < 4; ++k) corners[k] = model.rest_position[static_cast<std::size_t>(tets[t][k])];
+      const std::array<double, 6> volume = model_parts::edge_use_volumes(corners, volumes[t]);
       for (std::size_t k = 0; k < 6; ++k) {
         const auto& e = engine::kTetEdges[k];
         const auto a = tets[t][e[0]], b = tets[t][e[1]];
-        const double volume = length2[k] < shortest2 ? volumes[t] * (length2[k] / shortest2) : volumes[t];
-        uses[static_cast<std::size_t>(next[static_cast<std::size_t>(std::min(a, b))]++)] = {std::max(a, b), volume};
+        uses[static_cast<std::size_t>(next[static_cast<std::size_t>(std::min(a, b))]++)] = {std::max(a, b), volume[k]};
       }
     }
   }
 
-  std::vector<double> volume_sum;  // (n_springs)
-  volume_sum.reserve(uses.size() / 3);
   model.spring_b.reserve(uses.size() / 3);
+  model.spring_volume.reserve(uses.size() / 3);
+  model.spring_tets.reserve(uses.size() / 3);
   std::vector<std::int32_t> slot_of(n, -1);  // b's spring in the current bucket, if >= its first
   std::vector<std::uint64_t> row;              // the bucket's springs as b << 32 | index in the bucket
-  std::vector<double> row_volume;
+  std::vector<FixedVolume> row_volume;
+  std::vector<std::int32_t> row_tets;
   for (std::size_t a = 0; a < n; ++a) {
     const std::size_t first = model.spring_b.size();
     row.clear();
     row_volume.clear();
+    row_tets.clear();
     for (auto k = bucket_start[a]; k < bucket_start[a + 1]; ++k) {
       const Use& use = uses[static_cast<std::size_t>(k)];
       std::int32_t& slot = slot_of[static_cast<std::size_t>(use.b)];
       if (slot < static_cast<std::int32_t>(first)) {
         slot = static_cast<std::int32_t>(first + row.size());
         row.push_back(static_cast<std::uint64_t>(use.b) << 32 | row.size());
-        row_volume.push_back(0.0);
+        row_volume.push_back(0);
+        row_tets.push_back(0);
       }
-      row_volume[static_cast<std::size_t>(slot) - first] += use.volume;
+      row_volume[static_cast<std::size_t>(slot) - first] += to_fixed_volume(use.volume);
+      ++row_tets[static_cast<std::size_t>(slot) - first];
     }
     // Insertion sort by b of one word per spring (a handful per particle).
     for (std::size_t i = 1; i < row.size(); ++i) {
@@ -107,22 +77,14 @@ void add_springs(const std::vector<std::array<std::int32_t, 4>>& tets, const std
     }
     for (const std::uint64_t key : row) {
       model.spring_b.push_back(static_cast<std::int32_t>(key >> 32));
-      volume_sum.push_back(row_volume[key & 0xffffffffu]);
+      model.spring_volume.push_back(row_volume[key & 0xffffffffu]);
+      model.spring_tets.push_back(row_tets[key & 0xffffffffu]);
     }
     model.spring_a.resize(model.spring_b.size(), static_cast<std::int32_t>(a));
   }
 
   const std::size_t m = model.spring_b.size();
   for (auto* v : {&model.rest_length, &model.stiffness, &model.damping}) v->resize(m);
-  for (std::size_t s = 0; s < m; ++s) {
-    const Vec3& pa = model.rest_position[static_cast<std::size_t>(model.spring_a[s])];
-    const Vec3& pb = model.rest_position[static_cast<std::size_t>(model.spring_b[s])];
-    const double length = (pb - pa).norm();
-    const double k = material.youngs_modulus * volume_sum[s] / (length * length);
-    model.rest_length[s] = length;
-    model.stiffness[s] = k;
-    model.damping[s] = material.stiffness_damping * k;
-  }
 }
 
 }  // namespace
@@ -139,11 +101,19 @@ engine::ValidationReport SpringModel::validate() const {
   const std::size_t m = num_springs();
   if (spring_b.size() != m || rest_length.size() != m || stiffness.size() != m || damping.size() != m)
     report.add("spring arrays differ in size");
+  if (particle_volume.size() != n || particle_tets.size() != n || spring_volume.size() != m ||
+      spring_tets.size() != m)
+    report.add("volume sums differ in size from what they sum for");
   if (!report.ok()) return report;
 
   double sum = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!(mass[i] > 0)) report.add("particle " + std::to_string(i) + " has mass " + std::to_string(mass[i]));
+    if (particle_tets[i] <= 0) report.add("particle " + std::to_string(i) + " is in no tet");
+    // Every mass is the same multiple (density / 4) of its volume sum.
+    const double volume = to_double(particle_volume[i]), volume0 = to_double(particle_volume[0]);
+    if (std::abs(mass[i] * volume0 - mass[0] * volume) > 1e-12 * std::abs(mass[i] * volume0))
+      report.add("particle " + std::to_string(i) + "'s mass is not its volume's share");
     if (inv_mass[i] != 0 && std::abs(inv_mass[i] * mass[i] - 1) > 1e-12)
       report.add("particle " + std::to_string(i) + ": inv_mass is not 1 / mass");
     sum += mass[i];
@@ -160,6 +130,7 @@ engine::ValidationReport SpringModel::validate() const {
     }
     if (!(rest_length[s] > 0) || !(stiffness[s] > 0) || damping[s] < 0)
       report.add("spring " + std::to_string(s) + " has a non-positive length or stiffness");
+    if (spring_tets[s] <= 0) report.add("spring " + std::to_string(s) + " is in no tet");
     edges.emplace_back(a, b);
   }
   std::sort(edges.begin(), edges.end());
@@ -175,14 +146,19 @@ SpringModel build_spring_model(std::span<const Tet> tets, std::span<const Vec3> 
   SpringModel model;
   model.mass_damping = material.mass_damping;
 
-  // Dense particle numbering along the rest shape's longest axis (its
-  // bounding box's), ties by Morton (z-order) code: a sweep-plane order.
-  // The particles a spring joins sit within about one cross-section of each
-  // other, so the spring loops gather and scatter within a band that stays
-  // in cache, and the implicit solver's Gauss-Seidel sweeps carry a change
-  // along the body's length in one sweep. Against Morton order alone: the
-  // bench box's CG 7.60 -> 6.98 iterations a frame and its frames 5-13%
-  // faster (per-frame minima, alternated with a build in Morton order).
+  // Dense particle numbering along the longest axis of the rest positions'
+  // box, ties by Morton (z-order) code: a sweep-plane order. The particles
+  // a spring joins sit within about one cross-section of each other, so the
+  // spring loops gather and scatter within a band that stays in cache, and
+  // the implicit solver's Gauss-Seidel sweeps carry a change along the
+  // body's length in one sweep. Against Morton order alone: the bench box's
+  // CG 7.60 -> 6.98 iterations a frame and its frames 5-13% faster
+  // (per-frame minima, alternated with a build in Morton order). The box is
+  // all the positions', not only the used ones', so that the particles a
+  // change of tets keeps stay in order (spring_model_update.h).
+  const auto order = model_parts::ParticleOrder::of(rest_positions);
+  model.order_lo = order.lo;
+  model.order_hi = order.hi;
   std::vector<VertId> used;
   {
     std::vector<char> seen(rest_positions.size(), 0);
@@ -193,22 +169,12 @@ SpringModel build_spring_model(std::span<const Tet> tets, std::span<const Vec3> 
           used.push_back(v);
         }
   }
-  engine::Vec3 lo = engine::Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const VertId v : used) {
-    lo = lo.cwiseMin(rest_positions[v.index()]);
-    hi = hi.cwiseMax(rest_positions[v.index()]);
-  }
-  int axis = 0;
-  (hi - lo).maxCoeff(&axis);
-  std::vector<std::tuple<double, std::uint64_t, VertId>> keyed;
+  std::vector<std::pair<model_parts::ParticleOrder::Key, VertId>> keyed;
   keyed.reserve(used.size());
-  for (const VertId v : used) {
-    const Vec3& p = rest_positions[v.index()];
-    keyed.emplace_back(p[axis], morton_key(p, lo, hi), v);
-  }
+  for (const VertId v : used) keyed.emplace_back(order.key(rest_positions[v.index()], v), v);
   std::sort(keyed.begin(), keyed.end());
   std::vector<std::int32_t> particle_of(rest_positions.size(), -1);
-  for (const auto& [along, key, v] : keyed) {
+  for (const auto& [key, v] : keyed) {
     particle_of[v.index()] = static_cast<std::int32_t>(model.particle_vertex.size());
     model.particle_vertex.push_back(v);
     model.rest_position.push_back(rest_positions[v.index()]);
@@ -217,27 +183,30 @@ SpringModel build_spring_model(std::span<const Tet> tets, std::span<const Vec3> 
   for (std::size_t t = 0; t < tets.size(); ++t)
     for (int k = 0; k < 4; ++k) local[t][k] = particle_of[tets[t][k].index()];
   const std::size_t n = model.particle_vertex.size();
-  model.mass.assign(n, 0.0);
+  model.particle_volume.assign(n, 0);
+  model.particle_tets.assign(n, 0);
 
   std::vector<double> volumes(tets.size());
+  double total_volume = 0;
   for (std::size_t t = 0; t < tets.size(); ++t) {
     const auto& p = local[t];
     volumes[t] = engine::signed_volume(model.rest_position[p[0]], model.rest_position[p[1]],
                                        model.rest_position[p[2]], model.rest_position[p[3]]);
-    for (int k = 0; k < 4; ++k) model.mass[p[k]] += 0.25 * material.density * volumes[t];
+    total_volume += std::abs(volumes[t]);
+    const FixedVolume volume = to_fixed_volume(volumes[t]);
+    for (int k = 0; k < 4; ++k) {
+      model.particle_volume[p[k]] += volume;
+      ++model.particle_tets[p[k]];
+    }
   }
-  add_springs(local, volumes, material, model);
-
-  model.inv_mass.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    model.inv_mass[i] = is_fixed && is_fixed(model.particle_vertex[i]) ? 0.0 : 1.0 / model.mass[i];
-  model.total_mass = std::accumulate(model.mass.begin(), model.mass.end(), 0.0);
-
-  if (material.volume_stiffness > 0) {
-    model.tet_particles = std::move(local);
-    model.rest_volume = std::move(volumes);
-    model.volume_modulus = material.volume_stiffness * material.youngs_modulus;
-  }
+  // The sums stay in range (fixed_volume.h) while the body does.
+  if (!(total_volume < kMaxFixedVolumeTerm))
+    throw std::invalid_argument("the tets' volume, " + std::to_string(total_volume) +
+                                " m^3, is out of range for the spring model");
+  add_springs(local, volumes, model);
+  for (std::size_t s = 0; s < model.num_springs(); ++s) model_parts::set_spring_constants(model, s, material);
+  model_parts::finish_particles(model, material, is_fixed);
+  model_parts::set_volume_terms(model, tets, particle_of, material);
   return model;
 }
 

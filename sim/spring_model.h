@@ -26,6 +26,10 @@
 // (the liver scenario's first: 21 of 152,136 edge uses).
 // Masses are lumped: each tet gives a quarter of density * vol(T) to each of
 // its corners, so the total mass is exactly density * total volume.
+// Both sums are exact and order-independent (sim/fixed_volume.h): the model
+// keeps them, with how many tets make each, so that it can be updated by the
+// tets a move or a cut changes (sim/spring_model_update.h) to the same bits
+// as a build from scratch.
 
 #include <array>
 #include <cstdint>
@@ -35,6 +39,7 @@
 
 #include "engine/tet_mesh.h"
 #include "engine/validation.h"
+#include "sim/fixed_volume.h"
 #include "sim/material.h"
 
 namespace mtcut::sim {
@@ -71,12 +76,22 @@ struct SpringModel {
   double mass_damping = 0.0;            // 1/s, from the material
   double total_mass = 0.0;              // kg
 
+  // --- the exact sums the masses and stiffnesses come from
+  std::vector<FixedVolume> particle_volume;  // (n_particles) sum of vol(T) over the tets around
+  std::vector<std::int32_t> particle_tets;   // (n_particles) how many tets are around
+  std::vector<FixedVolume> spring_volume;    // (n_springs) Van Gelder's sum (short edges scaled)
+  std::vector<std::int32_t> spring_tets;     // (n_springs) how many tets use the edge
+  // The box the particle order is keyed in: all the rest positions' (not
+  // only the used ones', so that a change of tets keeps the survivors' order).
+  Vec3 order_lo = Vec3::Zero(), order_hi = Vec3::Zero();
+
   std::size_t num_particles() const { return mass.size(); }
   std::size_t num_springs() const { return spring_a.size(); }
   std::size_t num_fixed() const;
 
-  // Sizes agree, ids in range, masses positive and summing to total_mass,
-  // springs positive and distinct, a fixed particle has inv_mass 0.
+  // Sizes agree, ids in range, masses positive and summing to total_mass
+  // and agreeing with their volume sums, springs positive and distinct and
+  // used by a tet, a fixed particle has inv_mass 0.
   engine::ValidationReport validate() const;
 };
 

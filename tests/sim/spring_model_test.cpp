@@ -53,7 +53,7 @@ TEST(SpringModel, SpringsAreSortedByFirstThenSecondParticle) {
 // Against a plain reference on the real liver and on random subsets of its
 // tets (as a frontier uses some of the MT's vertices): one spring per
 // distinct edge, and its stiffness E * (sum of its tets' volumes) / |e|^2
-// with the volumes summed in tet order, bit for bit (a tet's volume scaled
+// with each volume rounded to fixed point and summed exactly (fixed_volume.h), bit for bit (a tet's volume scaled
 // by |e|^2 / (kShortEdgeFloor L_T)^2 for an edge below the floor, which
 // this liver has none of: AShortEdgeCountsAsTheFloorInVanGelder).
 TEST(SpringModel, SpringsMatchAReferenceOnTheLiverAndItsSubsets) {
@@ -69,7 +69,7 @@ TEST(SpringModel, SpringsMatchAReferenceOnTheLiverAndItsSubsets) {
     const SpringModel model = build_spring_model(tets, mesh.positions, material);
     ASSERT_TRUE(model.validate().ok()) << keep;
 
-    std::map<std::pair<VertId, VertId>, double> volume_of;  // by MT vertex ids, summed in tet order
+    std::map<std::pair<VertId, VertId>, FixedVolume> volume_of;  // by MT vertex ids, exact sums
     for (const engine::Tet& t : tets) {
       const double vol = engine::signed_volume(mesh.position(t[0]), mesh.position(t[1]), mesh.position(t[2]),
                                                mesh.position(t[3]));
@@ -79,7 +79,8 @@ TEST(SpringModel, SpringsMatchAReferenceOnTheLiverAndItsSubsets) {
       const double shortest2 = kShortEdgeFloor * kShortEdgeFloor * longest2;
       for (const auto& e : engine::kTetEdges) {
         const double length2 = (mesh.position(t[e[0]]) - mesh.position(t[e[1]])).squaredNorm();
-        volume_of[std::minmax(t[e[0]], t[e[1]])] += length2 < shortest2 ? vol * (length2 / shortest2) : vol;
+        volume_of[std::minmax(t[e[0]], t[e[1]])] +=
+            to_fixed_volume(length2 < shortest2 ? vol * (length2 / shortest2) : vol);
       }
     }
     ASSERT_EQ(model.num_springs(), volume_of.size()) << keep;
@@ -90,7 +91,7 @@ TEST(SpringModel, SpringsMatchAReferenceOnTheLiverAndItsSubsets) {
       ASSERT_NE(it, volume_of.end()) << "spring " << s;
       const double l = (mesh.position(a) - mesh.position(b)).norm();
       EXPECT_EQ(model.rest_length[s], l) << s;
-      EXPECT_EQ(model.stiffness[s], material.youngs_modulus * it->second / (l * l)) << s;
+      EXPECT_EQ(model.stiffness[s], material.youngs_modulus * to_double(it->second) / (l * l)) << s;
       volume_of.erase(it);  // each edge once
     }
   }

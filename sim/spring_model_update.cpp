@@ -1,0 +1,270 @@
+#include "sim/spring_model_update.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+
+#include "engine/tet_geometry.h"
+#include "sim/spring_model_parts.h"
+
+namespace mtcut::sim {
+namespace {
+
+using model_parts::ParticleOrder;
+
+// What a change does to one model: the old particles' and springs' sums
+// and counts, and the particles and springs it brings.
+class ChangeSums {
+ public:
+  ChangeSums(const SpringModel& old, std::size_t n_vertices)
+      : old_(old),
+        particle_volume_(old.particle_volume),
+        particle_tets_(old.particle_tets),
+        spring_volume_(old.spring_volume),
+        spring_tets_(old.spring_tets),
+        slot_(n_vertices, -1) {
+    for (std::size_t i = 0; i < old.num_particles(); ++i) {
+      const VertId v = old.particle_vertex[i];
+      if (v.index() >= n_vertices)
+        throw std::invalid_argument("update_spring_model: the model has a vertex the rest positions do not");
+      slot_[v.index()] = static_cast<std::int32_t>(i);
+    }
+  }
+
+  // Takes the tet's terms out (sign -1) or puts them in (+1).
+  void apply(const Tet& tet, std::span<const Vec3> rest_positions, int sign) {
+    std::array<Vec3, 4> corners;
+    for (int k = 0; k < 4; ++k) corners[k] = rest_positions[tet[k].index()];
+    const double volume = engine::signed_volume(corners[0], corners[1], corners[2], corners[3]);
+    const FixedVolume fixed = sign * to_fixed_volume(volume);
+    for (const VertId v : tet) {
+      const std::int32_t slot = slot_of(v, sign);
+      if (slot >= 0) {
+        particle_volume_[static_cast<std::size_t>(slot)] += fixed;
+        count(particle_tets_[static_cast<std::size_t>(slot)], sign);
+      } else {
+        NewParticle& p = new_particles_[static_cast<std::size_t>(-slot - 2)];
+        p.volume += fixed;
+        ++p.tets;
+      }
+    }
+    const std::array<double, 6> uses = model_parts::edge_use_volumes(corners, volume);
+    for (std::size_t k = 0; k < 6; ++k) {
+      const auto& e = engine::kTetEdges[k];
+      const VertId u = tet[e[0]], v = tet[e[1]];
+      const FixedVolume use = sign * to_fixed_volume(uses[k]);
+      const std::int32_t su = slot_[u.index()], sv = slot_[v.index()];
+      const std::int64_t s = su >= 0 && sv >= 0 ? old_spring(std::min(su, sv), std::max(su, sv)) : -1;
+      if (s >= 0) {
+        spring_volume_[static_cast<std::size_t>(s)] += use;
+        count(spring_tets_[static_cast<std::size_t>(s)], sign);
+        continue;
+      }
+      if (sign < 0) throw std::invalid_argument("update_spring_model: a removed tet's edge is not a spring");
+      const std::uint64_t key = static_cast<std::uint64_t>(std::min(u.value, v.value)) << 32 |
+                                static_cast<std::uint32_t>(std::max(u.value, v.value));
+      const auto [it, inserted] = new_spring_of_.try_emplace(key, new_springs_.size());
+      if (inserted) new_springs_.push_back({std::min(u, v), std::max(u, v)});
+      new_springs_[it->second].volume += use;
+      ++new_springs_[it->second].tets;
+    }
+  }
+
+  // The updated model's particles and springs. Old ones that no tet uses
+  // any more are dropped; the new ones are merged in order. `to_set`: the
+  // springs whose constants are left to compute (new, or with a new sum).
+  SpringModel finish(const ParticleOrder& order, std::span<const Vec3> rest_positions,
+                     std::vector<std::size_t>& to_set) const {
+    SpringModel model;
+    const std::vector<std::int32_t> renumbered = add_particles(order, rest_positions, model);
+    add_springs(renumbered, model, to_set);
+    return model;
+  }
+
+ private:
+  struct NewParticle {
+    VertId vertex;
+    FixedVolume volume = 0;
+    std::int32_t tets = 0;
+  };
+  struct NewSpring {
+    VertId u, v;  // MT vertices, u < v
+    FixedVolume volume = 0;
+    std::int32_t tets = 0;
+  };
+
+  static void count(std::int32_t& tets, int sign) {
+    tets += sign;
+    if (tets < 0) throw std::invalid_argument("update_spring_model: a tet was removed twice or never added");
+  }
+
+  // v's old particle (>= 0) or new particle (-2 - index), made on addition.
+  std::int32_t slot_of(VertId v, int sign) {
+    std::int32_t& slot = slot_[v.index()];
+    if (slot == -1) {
+      if (sign < 0) throw std::invalid_argument("update_spring_model: a removed tet's vertex is not a particle");
+      slot = -2 - static_cast<std::int32_t>(new_particles_.size());
+      new_particles_.push_back({v});
+    }
+    return slot;
+  }
+
+  // Old spring (a, b), a < b, or -1.
+  std::int64_t old_spring(std::int32_t a, std::int32_t b) const {
+    const auto first = std::lower_bound(old_.spring_a.begin(), old_.spring_a.end(), a);
+    for (auto it = first; it != old_.spring_a.end() && *it == a; ++it) {
+      const auto s = it - old_.spring_a.begin();
+      if (old_.spring_b[static_cast<std::size_t>(s)] == b) return s;
+    }
+    return -1;
+  }
+
+  // The particles that stay, in their order, with the new ones merged in by
+  // key. Returns each slot's new index (old particles, then new ones; -1 for
+  // one dropped).
+  std::vector<std::int32_t> add_particles(const ParticleOrder& order, std::span<const Vec3> rest_positions,
+                                          SpringModel& model) const {
+    const std::size_t n_old = old_.num_particles(), n_new = new_particles_.size();
+    std::vector<std::pair<ParticleOrder::Key, std::size_t>> fresh(n_new);
+    for (std::size_t j = 0; j < n_new; ++j) {
+      const VertId v = new_particles_[j].vertex;
+      fresh[j] = {order.key(rest_positions[v.index()], v), j};
+    }
+    std::sort(fresh.begin(), fresh.end());
+    // Where each new particle goes among the old ones (they are in key order).
+    std::vector<std::size_t> before(n_new);
+    for (std::size_t j = 0; j < n_new; ++j) {
+      std::size_t lo = 0, hi = n_old;
+      while (lo < hi) {
+        const std::size_t mid = (lo + hi) / 2;
+        const VertId v = old_.particle_vertex[mid];
+        if (order.key(old_.rest_position[mid], v) < fresh[j].first)
+          lo = mid + 1;
+        else
+          hi = mid;
+      }
+      before[j] = lo;
+    }
+    std::vector<std::int32_t> renumbered(n_old + n_new, -1);
+    const std::size_t n = n_new + n_old;  // at most
+    model.particle_vertex.reserve(n);
+    model.rest_position.reserve(n);
+    model.particle_volume.reserve(n);
+    model.particle_tets.reserve(n);
+    const auto emit = [&](std::size_t slot, VertId v, FixedVolume volume, std::int32_t tets) {
+      renumbered[slot] = static_cast<std::int32_t>(model.particle_vertex.size());
+      model.particle_vertex.push_back(v);
+      model.rest_position.push_back(rest_positions[v.index()]);
+      model.particle_volume.push_back(volume);
+      model.particle_tets.push_back(tets);
+    };
+    std::size_t j = 0;
+    const auto emit_new_before = [&](std::size_t i) {
+      for (; j < n_new && before[j] == i; ++j) {
+        const NewParticle& p = new_particles_[fresh[j].second];
+        emit(n_old + fresh[j].second, p.vertex, p.volume, p.tets);
+      }
+    };
+    for (std::size_t i = 0; i < n_old; ++i) {
+      emit_new_before(i);
+      if (particle_tets_[i] > 0) emit(i, old_.particle_vertex[i], particle_volume_[i], particle_tets_[i]);
+    }
+    emit_new_before(n_old);
+    return renumbered;
+  }
+
+  // The springs that stay, renumbered (their order holds), merged with the
+  // new ones by (a, b); constants copied for a spring whose sum is unchanged.
+  void add_springs(const std::vector<std::int32_t>& renumbered, SpringModel& model,
+                   std::vector<std::size_t>& to_set) const {
+    const std::size_t n_old = old_.num_particles();
+    const auto new_index = [&](VertId v) {
+      const std::int32_t slot = slot_[v.index()];
+      return renumbered[slot >= 0 ? static_cast<std::size_t>(slot) : n_old + static_cast<std::size_t>(-slot - 2)];
+    };
+    struct Ends {
+      std::int32_t a, b;
+      std::size_t index;
+      bool operator<(const Ends& o) const { return std::tie(a, b) < std::tie(o.a, o.b); }
+    };
+    std::vector<Ends> fresh;
+    fresh.reserve(new_springs_.size());
+    for (std::size_t k = 0; k < new_springs_.size(); ++k) {
+      const std::int32_t a = new_index(new_springs_[k].u), b = new_index(new_springs_[k].v);
+      fresh.push_back({std::min(a, b), std::max(a, b), k});
+    }
+    std::sort(fresh.begin(), fresh.end());
+    const std::size_t m = old_.num_springs() + fresh.size();  // at most
+    for (auto* v : {&model.spring_a, &model.spring_b, &model.spring_tets}) v->reserve(m);
+    for (auto* v : {&model.rest_length, &model.stiffness, &model.damping}) v->reserve(m);
+    model.spring_volume.reserve(m);
+    const auto emit = [&](std::int32_t a, std::int32_t b, FixedVolume volume, std::int32_t tets) {
+      model.spring_a.push_back(a);
+      model.spring_b.push_back(b);
+      model.spring_volume.push_back(volume);
+      model.spring_tets.push_back(tets);
+    };
+    std::size_t j = 0;
+    const auto emit_new_before = [&](const Ends* next) {
+      for (; j < fresh.size() && (next == nullptr || fresh[j] < *next); ++j) {
+        const NewSpring& s = new_springs_[fresh[j].index];
+        to_set.push_back(model.spring_a.size());
+        emit(fresh[j].a, fresh[j].b, s.volume, s.tets);
+        for (auto* v : {&model.rest_length, &model.stiffness, &model.damping}) v->push_back(0);
+      }
+    };
+    for (std::size_t s = 0; s < old_.num_springs(); ++s) {
+      if (spring_tets_[s] == 0) continue;
+      const Ends ends{renumbered[static_cast<std::size_t>(old_.spring_a[s])],
+                      renumbered[static_cast<std::size_t>(old_.spring_b[s])], s};
+      emit_new_before(&ends);
+      if (spring_volume_[s] != old_.spring_volume[s]) to_set.push_back(model.spring_a.size());
+      emit(ends.a, ends.b, spring_volume_[s], spring_tets_[s]);
+      model.rest_length.push_back(old_.rest_length[s]);
+      model.stiffness.push_back(old_.stiffness[s]);
+      model.damping.push_back(old_.damping[s]);
+    }
+    emit_new_before(nullptr);
+  }
+
+  const SpringModel& old_;
+  std::vector<FixedVolume> particle_volume_;
+  std::vector<std::int32_t> particle_tets_;
+  std::vector<FixedVolume> spring_volume_;
+  std::vector<std::int32_t> spring_tets_;
+  std::vector<std::int32_t> slot_;  // (n_vertices) old particle, -2 - new particle, -1 none
+  std::vector<NewParticle> new_particles_;
+  std::vector<NewSpring> new_springs_;
+  std::unordered_map<std::uint64_t, std::size_t> new_spring_of_;  // by (u, v) MT vertex pair
+};
+
+}  // namespace
+
+std::optional<SpringModel> update_spring_model(const SpringModel& old, std::span<const Tet> removed,
+                                               std::span<const Tet> added, std::span<const Tet> tets,
+                                               std::span<const Vec3> rest_positions, const MaterialDef& material,
+                                               const std::function<bool(VertId)>& is_fixed) {
+  const ParticleOrder order = ParticleOrder::of(rest_positions);
+  if (order.lo != old.order_lo || order.hi != old.order_hi) return std::nullopt;
+  ChangeSums sums(old, rest_positions.size());
+  for (const Tet& tet : removed) sums.apply(tet, rest_positions, -1);
+  for (const Tet& tet : added) sums.apply(tet, rest_positions, +1);
+  std::vector<std::size_t> to_set;
+  SpringModel model = sums.finish(order, rest_positions, to_set);
+  model.order_lo = order.lo;
+  model.order_hi = order.hi;
+  for (const std::size_t s : to_set) model_parts::set_spring_constants(model, s, material);
+  model_parts::finish_particles(model, material, is_fixed);
+  if (material.volume_stiffness > 0) {
+    std::vector<std::int32_t> particle_of(rest_positions.size(), -1);
+    for (std::size_t i = 0; i < model.num_particles(); ++i)
+      particle_of[model.particle_vertex[i].index()] = static_cast<std::int32_t>(i);
+    model_parts::set_volume_terms(model, tets, particle_of, material);
+  }
+  return model;
+}
+
+}  // namespace mtcut::sim
