@@ -84,8 +84,15 @@ void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, const O
   stepper_.carry_warm_start(std::move(carried));
 }
 
-ModelBuild World::start_model_build(const engine::Frontier& frontier) const {
-  return ModelBuild(ModelInputs::of(mt_, frontier, def_.material, def_.fixed), builder_.get());
+ModelBuild World::start_model_build(const engine::Frontier& frontier, std::span<const engine::TetId> model_tets,
+                                    const std::function<bool(engine::TetId)>& in_model) const {
+  // model_ stays as it is until the build is taken: every adoption takes
+  // the pending build first (a cut takes a pending move; a move starts
+  // once the cut's springs are taken).
+  return ModelBuild(def_.lod.update_springs ? ModelInputs::change_from(model_, model_tets, in_model, mt_, frontier,
+                                                                       def_.material, def_.fixed)
+                                            : ModelInputs::of(mt_, frontier, def_.material, def_.fixed),
+                    builder_.get());
 }
 
 void World::take_lod_move(FrameMetrics& m) {
@@ -148,8 +155,8 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     OriginIndex origins;
     for (const auto& made : result.changes.made_vertices)
       origins.by_vertex[made.id.value] = VertexOrigin{made.source.parents, made.source.weights};
-    cut_springs_ = std::make_unique<CutSprings>(
-        CutSprings{start_model_build(frontier_), std::move(snapshot), std::move(origins)});
+    ModelBuild springs = start_model_build(frontier_, snapshot.simulated_tets.members(), was_simulated);
+    cut_springs_ = std::make_unique<CutSprings>(CutSprings{std::move(springs), std::move(snapshot), std::move(origins)});
   }
 }
 
@@ -189,7 +196,8 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
       m.lod_changes = stats.refined + stats.coarsened;
       take_cut();
       if (lod_target_.version() != frontier_.version()) {
-        ModelBuild springs = start_model_build(lod_target_);
+        ModelBuild springs = start_model_build(lod_target_, frontier_.tets(),
+                                               [this](engine::TetId t) { return frontier_.has_tet(t); });
         const auto take_at = frame_ + static_cast<std::uint64_t>(std::max(1, def_.lod.build_frames));
         lod_move_.emplace(LodMove{std::move(lod_target_), std::move(springs), take_at});
       }

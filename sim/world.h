@@ -115,8 +115,11 @@ class World {
   // counts it in m.springs_built.
   void adopt_model(SpringModel model, struct DeformationSnapshot snapshot, const struct OriginIndex* origins,
                    FrameMetrics& m);
-  // Starts building springs on `frontier` (in the background unless def.lod says inline).
-  ModelBuild start_model_build(const engine::Frontier& frontier) const;
+  // Starts building springs on `frontier` (in the background unless def.lod
+  // says inline): updating model_, which is on the tets `model_tets`
+  // (in_model tells them), unless def.lod says to build from every tet.
+  ModelBuild start_model_build(const engine::Frontier& frontier, std::span<const engine::TetId> model_tets,
+                               const std::function<bool(engine::TetId)>& in_model) const;
   // Takes the pending LOD move, if any: frontier, springs, state.
   void take_lod_move(FrameMetrics& m);
   // Takes the springs of this frame's cut, if building: model and state.

@@ -24,14 +24,20 @@ struct LodDef {
   // during the LOD stage (sim/model_build.h, World); false builds them
   // inline at the same points: the same bits, slower.
   bool background_build = true;
+  // Update the springs by the tets a move or a cut changed
+  // (sim/spring_model_update.h) instead of building them from every tet:
+  // the same bits in a fraction of the time; false is for comparing.
+  bool update_springs = true;
   // The frames a move's springs have to build: the move the blade asks for
   // at frame k is taken at frame k + build_frames (sooner when a cut comes)
   // and the next one is decided then. Why 2: a 26k-tet frontier's build
-  // (~5-7 ms on a core that shares its cache with the physics) outlasts one
-  // liver frame's physics (~3.5 ms), so with 1 the frame taking a move
-  // waited out the rest (lod_ms p95 ~3.9 ms); two frames' physics cover it.
-  // The price: the frontier follows the blade two frames late, at most
-  // every other frame.
+  // (~5-7 ms on a core that shares its cache with the physics) outlasted
+  // one liver frame's physics (~3.5 ms), so with 1 the frame taking a move
+  // waited out the rest (lod_ms p95 ~3.9 ms). Since springs are updated
+  // (update_springs) 1 waits little, but moves twice as often: liver lod_ms
+  // mean 0.65-0.78 ms against 0.48-0.55 with 2, frames alike. The price of
+  // 2: the frontier follows the blade two frames late, at most every other
+  // frame.
   int build_frames = 2;
 };
 

@@ -307,19 +307,12 @@ TEST_P(WorldMoveLatency, AFrontierMoveTakesEffectBuildFramesAfterTheBladeAskedFo
 
 INSTANTIATE_TEST_SUITE_P(BuildFrames, WorldMoveLatency, ::testing::Values(1, 2, 3));
 
-// The blade sweeps along the organ disengaged, then cuts an L-shaped stroke
-// 2 cm short of the organ's bottom a sample a frame (its turn cuts the first leg
-// while the frontier follows the blade), then lifts: one World builds each frontier move's springs on
-// another core, the other inline. Where a move is taken is fixed by the
-// frame loop (before a cut changes the MT, else at the next frame's LOD
-// stage), not by when its build ends, so both have the same bits every frame.
-TEST(World, SpringsBuiltInTheBackgroundGiveTheInlineBuildsBits) {
-  WorldDef background_def = organ_def();
-  background_def.environment.gravity.setZero();  // the organ keeps its shape: the blade's tip stays in it
-  ASSERT_TRUE(background_def.lod.background_build);
-  WorldDef inline_def = background_def;
-  inline_def.lod.background_build = false;
-  World background(organ_mt(2000), background_def), inline_build(organ_mt(2000), inline_def);
+// Two Worlds that differ only in how their springs are made take a
+// disengaged sweep and then an L stroke cut one sample per frame while the
+// frontier follows the blade. Every frame: equal state hashes, frontiers,
+// metrics and spring models, and both valid.
+void expect_same_runs(const WorldDef& a_def, const WorldDef& b_def) {
+  World a_world(organ_mt(2000), a_def), b_world(organ_mt(2000), b_def);
   const ScalpelPath approach = sweep();
   std::vector<ScalpelPose> stroke = l_stroke();
   for (ScalpelPose& p : stroke) p.tip.z() = -0.02;  // the tip, the LOD's focus, in the organ
@@ -329,23 +322,54 @@ TEST(World, SpringsBuiltInTheBackgroundGiveTheInlineBuildsBits) {
     const ScalpelPose pose = f < 40                   ? approach.pose_at(f / 60.0)
                              : f < 40 + stroke_frames ? stroke[static_cast<std::size_t>(f - 40)]
                                                       : blade_at(-0.02, 0.0, false);
-    const FrameMetrics a = background.step(pose);
-    const FrameMetrics& b = inline_build.step(pose);
-    ASSERT_EQ(background.state_hash(), inline_build.state_hash()) << "frame " << f;
+    const FrameMetrics a = a_world.step(pose);
+    const FrameMetrics& b = b_world.step(pose);
+    ASSERT_EQ(a_world.state_hash(), b_world.state_hash()) << "frame " << f;
     ASSERT_EQ(a.lod_changes, b.lod_changes) << "frame " << f;
     ASSERT_EQ(a.cut_tets, b.cut_tets) << "frame " << f;
-    ASSERT_EQ(sorted_tets(background.frontier()), sorted_tets(inline_build.frontier())) << "frame " << f;
+    ASSERT_EQ(sorted_tets(a_world.frontier()), sorted_tets(b_world.frontier())) << "frame " << f;
+    const SpringModel &a_model = a_world.model(), &b_model = b_world.model();
+    ASSERT_EQ(a_model.particle_vertex, b_model.particle_vertex) << "frame " << f;
+    ASSERT_EQ(a_model.mass, b_model.mass) << "frame " << f;
+    ASSERT_EQ(a_model.spring_a, b_model.spring_a) << "frame " << f;
+    ASSERT_EQ(a_model.spring_b, b_model.spring_b) << "frame " << f;
+    ASSERT_EQ(a_model.stiffness, b_model.stiffness) << "frame " << f;
     cut_while_moving += a.cuts_started > 0 && moves > 0 && !a.frozen;
     moves += a.lod_changes;
     cut_tets += a.cut_tets;
-    const auto report = background.validate();
+    const auto report = a_world.validate();
     ASSERT_TRUE(report.ok()) << "frame " << f << ": " << report.summary();
   }
   EXPECT_GT(moves, 0u);
   EXPECT_GT(cut_tets, 0u);
   EXPECT_GT(cut_while_moving, 0u);
-  EXPECT_EQ(background.pieces(), inline_build.pieces());
-  EXPECT_EQ(background.nan_events(), 0u);
+  EXPECT_EQ(a_world.pieces(), b_world.pieces());
+  EXPECT_EQ(a_world.nan_events(), 0u);
+}
+
+// Springs built on the worker thread give the inline builds' bits: where a
+// move is taken is fixed by the frame loop (before a cut changes the MT,
+// else build_frames after it was decided), not by when its build ends. The
+// L stroke runs 2 cm short of the organ's bottom; its turn cuts the first
+// leg while the frontier follows the blade.
+TEST(World, SpringsBuiltInTheBackgroundGiveTheInlineBuildsBits) {
+  WorldDef background_def = organ_def();
+  background_def.environment.gravity.setZero();  // the organ keeps its shape: the blade's tip stays in it
+  ASSERT_TRUE(background_def.lod.background_build);
+  WorldDef inline_def = background_def;
+  inline_def.lod.background_build = false;
+  expect_same_runs(background_def, inline_def);
+}
+
+// Springs updated by the tets each move and cut changed give the bits of
+// springs built from every tet (spring_model_update.h).
+TEST(World, SpringsUpdatedByEachChangeGiveTheFullBuildsBits) {
+  WorldDef update_def = organ_def();
+  update_def.environment.gravity.setZero();
+  ASSERT_TRUE(update_def.lod.update_springs);
+  WorldDef build_def = update_def;
+  build_def.lod.update_springs = false;
+  expect_same_runs(update_def, build_def);
 }
 
 // Under a small budget the jobs of hidden fragments run in later frames.
