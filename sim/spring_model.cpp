@@ -205,7 +205,10 @@ SpringModel build_spring_model(std::span<const Tet> tets, std::span<const Vec3> 
                                 " m^3, is out of range for the spring model");
   add_springs(local, volumes, model);
   for (std::size_t s = 0; s < model.num_springs(); ++s) model_parts::set_spring_constants(model, s, material);
-  model_parts::finish_particles(model, material, is_fixed);
+  std::vector<char> fixed(n, 0);
+  if (is_fixed)
+    for (std::size_t i = 0; i < n; ++i) fixed[i] = is_fixed(model.particle_vertex[i]);
+  model_parts::finish_particles(model, material, fixed);
   model_parts::set_volume_terms(model, tets, particle_of, material);
   return model;
 }

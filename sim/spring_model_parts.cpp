@@ -68,14 +68,14 @@ std::array<double, 6> edge_use_volumes(const std::array<Vec3, 4>& corners, doubl
   return out;
 }
 
-void finish_particles(SpringModel& model, const MaterialDef& material, const std::function<bool(VertId)>& is_fixed) {
+void finish_particles(SpringModel& model, const MaterialDef& material, const std::vector<char>& fixed) {
   const std::size_t n = model.particle_volume.size();
   const double quarter_density = 0.25 * material.density;  // each tet gives a quarter of its mass to each corner
   model.mass.resize(n);
   model.inv_mass.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     model.mass[i] = quarter_density * to_double(model.particle_volume[i]);
-    model.inv_mass[i] = is_fixed && is_fixed(model.particle_vertex[i]) ? 0.0 : 1.0 / model.mass[i];
+    model.inv_mass[i] = fixed[i] ? 0.0 : 1.0 / model.mass[i];
   }
   model.total_mass = std::accumulate(model.mass.begin(), model.mass.end(), 0.0);
   model.mass_damping = material.mass_damping;

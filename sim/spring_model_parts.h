@@ -34,8 +34,9 @@ struct ParticleOrder {
 // L_T)^2 for an edge shorter than kShortEdgeFloor times the longest, L_T.
 std::array<double, 6> edge_use_volumes(const std::array<Vec3, 4>& corners, double volume);
 
-// mass, inv_mass and total_mass from particle_volume.
-void finish_particles(SpringModel& model, const MaterialDef& material, const std::function<bool(VertId)>& is_fixed);
+// mass, inv_mass (0 where `fixed`, one flag per particle) and total_mass
+// from particle_volume.
+void finish_particles(SpringModel& model, const MaterialDef& material, const std::vector<char>& fixed);
 
 // Spring s's rest length, stiffness and damping from its ends and spring_volume[s].
 void set_spring_constants(SpringModel& model, std::size_t s, const MaterialDef& material);

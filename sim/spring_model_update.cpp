@@ -75,11 +75,13 @@ class ChangeSums {
 
   // The updated model's particles and springs. Old ones that no tet uses
   // any more are dropped; the new ones are merged in order. `to_set`: the
-  // springs whose constants are left to compute (new, or with a new sum).
+  // springs whose constants are left to compute (new, or with a new sum);
+  // `fixed`: each particle's (add_particles).
   SpringModel finish(const ParticleOrder& order, std::span<const Vec3> rest_positions,
+                     const std::function<bool(VertId)>& is_fixed, std::vector<char>& fixed,
                      std::vector<std::size_t>& to_set) const {
     SpringModel model;
-    const std::vector<std::int32_t> renumbered = add_particles(order, rest_positions, model);
+    const std::vector<std::int32_t> renumbered = add_particles(order, rest_positions, is_fixed, model, fixed);
     add_springs(renumbered, model, to_set);
     return model;
   }
@@ -125,8 +127,11 @@ class ChangeSums {
   // The particles that stay, in their order, with the new ones merged in by
   // key. Returns each slot's new index (old particles, then new ones; -1 for
   // one dropped).
+  // `fixed`: each particle's, old ones' as they were (their vertex and rest
+  // position are), new ones' from is_fixed_vertex.
   std::vector<std::int32_t> add_particles(const ParticleOrder& order, std::span<const Vec3> rest_positions,
-                                          SpringModel& model) const {
+                                          const std::function<bool(VertId)>& is_fixed_vertex, SpringModel& model,
+                                          std::vector<char>& fixed) const {
     const std::size_t n_old = old_.num_particles(), n_new = new_particles_.size();
     std::vector<std::pair<ParticleOrder::Key, std::size_t>> fresh(n_new);
     for (std::size_t j = 0; j < n_new; ++j) {
@@ -148,29 +153,38 @@ class ChangeSums {
       }
       before[j] = lo;
     }
+    // Sized once and written by index: a push_back per array per particle
+    // cost more than the rest of the pass.
     std::vector<std::int32_t> renumbered(n_old + n_new, -1);
-    const std::size_t n = n_new + n_old;  // at most
-    model.particle_vertex.reserve(n);
-    model.rest_position.reserve(n);
-    model.particle_volume.reserve(n);
-    model.particle_tets.reserve(n);
-    const auto emit = [&](std::size_t slot, VertId v, FixedVolume volume, std::int32_t tets) {
-      renumbered[slot] = static_cast<std::int32_t>(model.particle_vertex.size());
-      model.particle_vertex.push_back(v);
-      model.rest_position.push_back(rest_positions[v.index()]);
-      model.particle_volume.push_back(volume);
-      model.particle_tets.push_back(tets);
+    const auto kept = static_cast<std::size_t>(
+        std::count_if(particle_tets_.begin(), particle_tets_.end(), [](std::int32_t t) { return t > 0; }));
+    const std::size_t n = kept + n_new;
+    model.particle_vertex.resize(n);
+    model.rest_position.resize(n);
+    model.particle_volume.resize(n);
+    model.particle_tets.resize(n);
+    fixed.resize(n);
+    std::size_t out = 0;
+    const auto emit = [&](std::size_t slot, VertId v, FixedVolume volume, std::int32_t tets, char is_fixed) {
+      renumbered[slot] = static_cast<std::int32_t>(out);
+      model.particle_vertex[out] = v;
+      model.rest_position[out] = rest_positions[v.index()];
+      model.particle_volume[out] = volume;
+      model.particle_tets[out] = tets;
+      fixed[out] = is_fixed;
+      ++out;
     };
     std::size_t j = 0;
     const auto emit_new_before = [&](std::size_t i) {
       for (; j < n_new && before[j] == i; ++j) {
         const NewParticle& p = new_particles_[fresh[j].second];
-        emit(n_old + fresh[j].second, p.vertex, p.volume, p.tets);
+        emit(n_old + fresh[j].second, p.vertex, p.volume, p.tets, is_fixed_vertex && is_fixed_vertex(p.vertex));
       }
     };
     for (std::size_t i = 0; i < n_old; ++i) {
-      emit_new_before(i);
-      if (particle_tets_[i] > 0) emit(i, old_.particle_vertex[i], particle_volume_[i], particle_tets_[i]);
+      if (j < n_new) emit_new_before(i);
+      if (particle_tets_[i] > 0)
+        emit(i, old_.particle_vertex[i], particle_volume_[i], particle_tets_[i], old_.inv_mass[i] == 0);
     }
     emit_new_before(n_old);
     return renumbered;
@@ -197,35 +211,52 @@ class ChangeSums {
       fresh.push_back({std::min(a, b), std::max(a, b), k});
     }
     std::sort(fresh.begin(), fresh.end());
-    const std::size_t m = old_.num_springs() + fresh.size();  // at most
-    for (auto* v : {&model.spring_a, &model.spring_b, &model.spring_tets}) v->reserve(m);
-    for (auto* v : {&model.rest_length, &model.stiffness, &model.damping}) v->reserve(m);
-    model.spring_volume.reserve(m);
-    const auto emit = [&](std::int32_t a, std::int32_t b, FixedVolume volume, std::int32_t tets) {
-      model.spring_a.push_back(a);
-      model.spring_b.push_back(b);
-      model.spring_volume.push_back(volume);
-      model.spring_tets.push_back(tets);
+    const auto kept = static_cast<std::size_t>(
+        std::count_if(spring_tets_.begin(), spring_tets_.end(), [](std::int32_t t) { return t > 0; }));
+    const std::size_t m = kept + fresh.size();
+    for (auto* v : {&model.spring_a, &model.spring_b, &model.spring_tets}) v->resize(m);
+    for (auto* v : {&model.rest_length, &model.stiffness, &model.damping}) v->resize(m);
+    model.spring_volume.resize(m);
+    // Raw pointers, hoisted: through the vectors, each write made the
+    // compiler reload every array's start (they might alias), which doubled
+    // the pass.
+    std::int32_t *out_a = model.spring_a.data(), *out_b = model.spring_b.data(), *out_tets = model.spring_tets.data();
+    FixedVolume* out_volume = model.spring_volume.data();
+    double *out_length = model.rest_length.data(), *out_stiffness = model.stiffness.data(),
+           *out_damping = model.damping.data();
+    const std::int32_t *old_a = old_.spring_a.data(), *old_b = old_.spring_b.data(), *tets = spring_tets_.data(),
+                       *index = renumbered.data();
+    const FixedVolume *volume = spring_volume_.data(), *old_volume = old_.spring_volume.data();
+    const double *old_length = old_.rest_length.data(), *old_stiffness = old_.stiffness.data(),
+                 *old_damping = old_.damping.data();
+    std::size_t out = 0;
+    const auto emit = [&](std::int32_t a, std::int32_t b, FixedVolume sum, std::int32_t count) {
+      out_a[out] = a;
+      out_b[out] = b;
+      out_volume[out] = sum;
+      out_tets[out] = count;
+      ++out;
     };
     std::size_t j = 0;
     const auto emit_new_before = [&](const Ends* next) {
       for (; j < fresh.size() && (next == nullptr || fresh[j] < *next); ++j) {
         const NewSpring& s = new_springs_[fresh[j].index];
-        to_set.push_back(model.spring_a.size());
+        to_set.push_back(out);
         emit(fresh[j].a, fresh[j].b, s.volume, s.tets);
-        for (auto* v : {&model.rest_length, &model.stiffness, &model.damping}) v->push_back(0);
       }
     };
-    for (std::size_t s = 0; s < old_.num_springs(); ++s) {
-      if (spring_tets_[s] == 0) continue;
-      const Ends ends{renumbered[static_cast<std::size_t>(old_.spring_a[s])],
-                      renumbered[static_cast<std::size_t>(old_.spring_b[s])], s};
-      emit_new_before(&ends);
-      if (spring_volume_[s] != old_.spring_volume[s]) to_set.push_back(model.spring_a.size());
-      emit(ends.a, ends.b, spring_volume_[s], spring_tets_[s]);
-      model.rest_length.push_back(old_.rest_length[s]);
-      model.stiffness.push_back(old_.stiffness[s]);
-      model.damping.push_back(old_.damping[s]);
+    for (std::size_t s = 0, m_old = old_.num_springs(); s < m_old; ++s) {
+      if (tets[s] == 0) continue;
+      const Ends ends{index[static_cast<std::size_t>(old_a[s])], index[static_cast<std::size_t>(old_b[s])], s};
+      if (j < fresh.size()) emit_new_before(&ends);
+      if (volume[s] != old_volume[s]) {
+        to_set.push_back(out);
+      } else {
+        out_length[out] = old_length[s];
+        out_stiffness[out] = old_stiffness[s];
+        out_damping[out] = old_damping[s];
+      }
+      emit(ends.a, ends.b, volume[s], tets[s]);
     }
     emit_new_before(nullptr);
   }
@@ -253,11 +284,12 @@ std::optional<SpringModel> update_spring_model(const SpringModel& old, std::span
   for (const Tet& tet : removed) sums.apply(tet, rest_positions, -1);
   for (const Tet& tet : added) sums.apply(tet, rest_positions, +1);
   std::vector<std::size_t> to_set;
-  SpringModel model = sums.finish(order, rest_positions, to_set);
+  std::vector<char> fixed;
+  SpringModel model = sums.finish(order, rest_positions, is_fixed, fixed, to_set);
   model.order_lo = order.lo;
   model.order_hi = order.hi;
   for (const std::size_t s : to_set) model_parts::set_spring_constants(model, s, material);
-  model_parts::finish_particles(model, material, is_fixed);
+  model_parts::finish_particles(model, material, fixed);
   if (material.volume_stiffness > 0) {
     std::vector<std::int32_t> particle_of(rest_positions.size(), -1);
     for (std::size_t i = 0; i < model.num_particles(); ++i)
