@@ -26,6 +26,9 @@ TEST(BenchSim, ReportsEveryIntegratorAndTheReference) {
   }
   EXPECT_GT(out["mesh"]["springs"].get<int>(), out["mesh"]["vertices"].get<int>());
   EXPECT_GT(out["model_build_ms"].get<double>(), 0.0);
+  EXPECT_GT(out["model_update"]["model_update_ms"].get<double>(), 0.0);
+  EXPECT_GT(out["model_update"]["removed_tets"].get<int>(), 0);
+  EXPECT_EQ(out["model_update"]["added_tets"].get<int>(), 4 * out["model_update"]["removed_tets"].get<int>());
   EXPECT_GT(out["symplectic_euler"]["vs_reference"].get<double>(), 0.0);
   for (const char* key : {"implicit_euler", "implicit_euler_loose"}) {
     const auto& implicit = out[key];
