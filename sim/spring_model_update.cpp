@@ -105,6 +105,8 @@ class ChangeSums {
 
   // v's old particle (>= 0) or new particle (-2 - index), made on addition.
   std::int32_t slot_of(VertId v, int sign) {
+    if (v.index() >= slot_.size())
+      throw std::invalid_argument("update_spring_model: a tet has a vertex the rest positions do not");
     std::int32_t& slot = slot_[v.index()];
     if (slot == -1) {
       if (sign < 0) throw std::invalid_argument("update_spring_model: a removed tet's vertex is not a particle");

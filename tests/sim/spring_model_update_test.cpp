@@ -137,13 +137,15 @@ TEST(SpringModelUpdate, DeclinesWhenTheRestPositionsOutgrowTheOrderBox) {
 }
 
 // A removed tet must be one of the model's: a vertex, an edge or a tet it
-// does not have is refused, as is one removed twice.
+// does not have is refused, as is one removed twice, and a tet's vertices
+// must have rest positions.
 TEST(SpringModelUpdate, RefusesToRemoveWhatTheModelDoesNotHave) {
   const std::vector<Vec3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {-1, -1, 1}};
   const engine::Tet a{VertId(0), VertId(1), VertId(2), VertId(3)};
   const engine::Tet b{VertId(1), VertId(2), VertId(3), VertId(4)};
   const engine::Tet unknown_vertex{VertId(0), VertId(1), VertId(2), VertId(5)};
   const engine::Tet unknown_edge{VertId(0), VertId(1), VertId(4), VertId(2)};
+  const engine::Tet out_of_range{VertId(1), VertId(2), VertId(3), VertId(6)};
   const MaterialDef material;
   const std::vector<engine::Tet> tets = {a, b};
   const SpringModel model = build_spring_model(tets, positions, material);
@@ -153,6 +155,9 @@ TEST(SpringModelUpdate, RefusesToRemoveWhatTheModelDoesNotHave) {
         std::vector<engine::Tet>{a, a}}) {
     EXPECT_THROW(update_spring_model(model, removed, none, none, positions, material), std::invalid_argument);
   }
+  const std::vector<engine::Tet> added_out_of_range = {out_of_range};
+  EXPECT_THROW(update_spring_model(model, none, added_out_of_range, added_out_of_range, positions, material),
+               std::invalid_argument);
   const auto only_b = update_spring_model(model, std::vector<engine::Tet>{a}, none, {&b, 1}, positions, material);
   ASSERT_TRUE(only_b.has_value());
   EXPECT_EQ(only_b->num_particles(), 4u);
