@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <stdexcept>
 #include <tuple>
-#include <unordered_map>
 #include <utility>
 
+#include "absl/container/flat_hash_map.h"
 #include "engine/tet_geometry.h"
 #include "sim/spring_model_parts.h"
 
@@ -25,7 +25,10 @@ class ChangeSums {
         particle_tets_(old.particle_tets),
         spring_volume_(old.spring_volume),
         spring_tets_(old.spring_tets),
+        row_start_(old.num_particles() + 1, 0),
         slot_(n_vertices, -1) {
+    for (const std::int32_t a : old.spring_a) ++row_start_[static_cast<std::size_t>(a) + 1];
+    for (std::size_t i = 0; i < old.num_particles(); ++i) row_start_[i + 1] += row_start_[i];
     for (std::size_t i = 0; i < old.num_particles(); ++i) {
       const VertId v = old.particle_vertex[i];
       if (v.index() >= n_vertices)
@@ -116,13 +119,11 @@ class ChangeSums {
     return slot;
   }
 
-  // Old spring (a, b), a < b, or -1.
+  // Old spring (a, b), a < b, or -1: a scan of a's row (a handful).
   std::int64_t old_spring(std::int32_t a, std::int32_t b) const {
-    const auto first = std::lower_bound(old_.spring_a.begin(), old_.spring_a.end(), a);
-    for (auto it = first; it != old_.spring_a.end() && *it == a; ++it) {
-      const auto s = it - old_.spring_a.begin();
+    const auto row = static_cast<std::size_t>(a);
+    for (std::int32_t s = row_start_[row]; s < row_start_[row + 1]; ++s)
       if (old_.spring_b[static_cast<std::size_t>(s)] == b) return s;
-    }
     return -1;
   }
 
@@ -268,10 +269,11 @@ class ChangeSums {
   std::vector<std::int32_t> particle_tets_;
   std::vector<FixedVolume> spring_volume_;
   std::vector<std::int32_t> spring_tets_;
-  std::vector<std::int32_t> slot_;  // (n_vertices) old particle, -2 - new particle, -1 none
+  std::vector<std::int32_t> row_start_;  // (n_old + 1) old particle a's springs: [row_start_[a], row_start_[a + 1])
+  std::vector<std::int32_t> slot_;       // (n_vertices) old particle, -2 - new particle, -1 none
   std::vector<NewParticle> new_particles_;
   std::vector<NewSpring> new_springs_;
-  std::unordered_map<std::uint64_t, std::size_t> new_spring_of_;  // by (u, v) MT vertex pair
+  absl::flat_hash_map<std::uint64_t, std::size_t> new_spring_of_;  // by (u, v) MT vertex pair
 };
 
 }  // namespace
