@@ -1,6 +1,7 @@
 #include "engine/mt/mt.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 
 #include "engine/mt/tet_error.h"
@@ -22,6 +23,11 @@ std::vector<FragId> sorted_unique(std::vector<FragId> ids) {
 }
 
 }  // namespace
+
+std::uint64_t Mt::InstanceId::next() {
+  static std::atomic<std::uint64_t> next_value{1};
+  return next_value.fetch_add(1, std::memory_order_relaxed);
+}
 
 Mt Mt::from_fine_mesh(const TetMesh& fine) {
   Mt mt;
@@ -102,6 +108,7 @@ TetId Mt::append_tet(const Tet& verts, FragId birth, FragId death, FaceMask boun
   if (death.valid()) set_death(t, death);
   ++live_tets_;
   ++revision_;
+  frag_created_revision_[birth.index()] = revision_;
   return t;
 }
 
@@ -120,19 +127,22 @@ void Mt::kill_tet(TetId t) {
   assert(alive(t));
   erase_from(frag_created_, tet_birth_slot_, birth(t), t);
   if (death(t).valid()) erase_from(frag_replaced_, tet_death_slot_, death(t), t);
+  ++revision_;
+  frag_created_revision_[birth(t).index()] = revision_;
   tet_birth_[t.index()] = FragId();
   tet_death_[t.index()] = FragId();
   --live_tets_;
-  ++revision_;
 }
 
 void Mt::set_birth(TetId t, FragId f) {
   assert(alive(t) && f.valid());
   erase_from(frag_created_, tet_birth_slot_, birth(t), t);
+  ++revision_;
+  frag_created_revision_[birth(t).index()] = revision_;
+  frag_created_revision_[f.index()] = revision_;
   tet_birth_[t.index()] = f;
   tet_birth_slot_[t.index()] = static_cast<std::int32_t>(frag_created_[f.index()].size());
   frag_created_[f.index()].push_back(t);
-  ++revision_;
 }
 
 void Mt::set_death(TetId t, FragId f) {
@@ -161,6 +171,7 @@ FragId Mt::add_fragment() {
   frag_created_.emplace_back();
   frag_replaced_.emplace_back();
   ++revision_;
+  frag_created_revision_.push_back(revision_);
   return FragId(frag_created_.size() - 1);
 }
 
@@ -202,7 +213,7 @@ std::size_t Mt::bytes() const {
                       vector_bytes(tet_death_) + vector_bytes(tet_error_) + vector_bytes(tet_error_inherited_) +
                       vector_bytes(tet_boundary_) +
                       vector_bytes(tet_birth_slot_) + vector_bytes(tet_death_slot_) + vector_bytes(frag_created_) +
-                      vector_bytes(frag_replaced_);
+                      vector_bytes(frag_replaced_) + vector_bytes(frag_created_revision_);
   for (const auto& list : frag_created_) total += vector_bytes(list);
   for (const auto& list : frag_replaced_) total += vector_bytes(list);
   return total;

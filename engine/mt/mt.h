@@ -103,6 +103,11 @@ class Mt {
   FragId drain() const { return drain_; }
   std::span<const TetId> created(FragId f) const { return frag_created_[f.index()]; }
   std::span<const TetId> replaced(FragId f) const { return frag_replaced_[f.index()]; }
+  // The revision() at which created(f) last changed (a tet born in f added,
+  // killed or moved): what data derived per fragment compares, with
+  // instance(), to know it is stale (selective refinement re-indexes only
+  // the fragments a cut changed).
+  std::uint64_t created_revision(FragId f) const { return frag_created_revision_[f.index()]; }
   // Largest error of the tets f creates (0 when it creates none).
   float fragment_error(FragId f) const;
   FragId add_fragment();
@@ -120,6 +125,10 @@ class Mt {
   // Incremented by every mutation: derived indexes (BVHs, cached orders)
   // compare it to know they are stale.
   std::uint64_t revision() const { return revision_; }
+  // Unique to this object in the process, and renewed when it is copied or
+  // assigned: two MTs with the same instance() are one object whose
+  // revisions can be compared.
+  std::uint64_t instance() const { return instance_.value; }
   // Heap bytes held by the MT's arrays.
   std::size_t bytes() const;
 
@@ -153,6 +162,7 @@ class Mt {
   std::vector<std::int32_t> tet_death_slot_;    // (n_tets) index of t in replaced(death(t)), -1 if none
 
   std::vector<std::vector<TetId>> frag_created_;   // (n_fragments) tets each fragment creates
+  std::vector<std::uint64_t> frag_created_revision_;  // (n_fragments) see created_revision()
   std::vector<std::vector<TetId>> frag_replaced_;  // (n_fragments) tets each fragment replaces
 
   FragId root_;
@@ -161,6 +171,18 @@ class Mt {
   double fine_volume_ = 0.0;
   bool boundary_preserved_ = true;
   std::uint64_t revision_ = 0;
+  // A process-wide unique number that a copy does not share.
+  struct InstanceId {
+    std::uint64_t value = next();
+    InstanceId() = default;
+    InstanceId(const InstanceId&) : value(next()) {}
+    InstanceId& operator=(const InstanceId&) {
+      value = next();
+      return *this;
+    }
+    static std::uint64_t next();
+  };
+  InstanceId instance_;
 };
 
 // The faces of a set of tets that no other tet of the set shares, each as

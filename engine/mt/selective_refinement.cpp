@@ -61,21 +61,39 @@ std::size_t SelectiveRefiner::bytes() const {
          (frag_error_.capacity() + node_min_.capacity() + node_max_.capacity()) * sizeof(float) + meets_.capacity();
 }
 
-void SelectiveRefiner::rebuild_index(const Mt& mt) {
+std::vector<FragId> SelectiveRefiner::rebuild_index(const Mt& mt) {
+  // What an index keeps of a fragment depends only on its created tets:
+  // kept while created_revision says they did not change (in this MT).
+  if (index_instance_ != mt.instance()) summary_.clear();
+  index_instance_ = mt.instance();
+  summary_.resize(mt.num_fragments());
+  std::vector<FragId> changed;
   indexed_.clear(), frag_box_.clear(), worst_box_.clear(), frag_error_.clear();
   for (std::size_t i = 0; i < mt.num_fragments(); ++i) {
     const FragId f(i);
+    FragmentSummary& summary = summary_[i];
+    if (summary.revision != mt.created_revision(f)) {
+      changed.push_back(f);
+      summary.revision = mt.created_revision(f);
+      summary.computed = false;
+    }
     if (f == mt.root() || f == mt.drain() || mt.created(f).empty()) continue;
-    Aabb box;
-    TetId worst = mt.created(f).front();
-    for (TetId t : mt.created(f)) {
-      box.extend(tet_box(mt, t));
-      if (mt.error(t) > mt.error(worst)) worst = t;
+    if (!summary.computed) {
+      Aabb box;
+      TetId worst = mt.created(f).front();
+      for (TetId t : mt.created(f)) {
+        box.extend(tet_box(mt, t));
+        if (mt.error(t) > mt.error(worst)) worst = t;
+      }
+      summary.box = box;
+      summary.worst_box = tet_box(mt, worst);
+      summary.error = mt.error(worst);
+      summary.computed = true;
     }
     indexed_.push_back(f);
-    frag_box_.push_back(box);
-    worst_box_.push_back(tet_box(mt, worst));
-    frag_error_.push_back(mt.error(worst));
+    frag_box_.push_back(summary.box);
+    worst_box_.push_back(summary.worst_box);
+    frag_error_.push_back(summary.error);
   }
   std::vector<std::int32_t> levels(frag_error_.size());
   for (std::size_t i = 0; i < levels.size(); ++i) levels[i] = error_level(frag_error_[i]);
@@ -100,12 +118,18 @@ void SelectiveRefiner::rebuild_index(const Mt& mt) {
     }
   }
   index_revision_ = mt.revision();
+  return changed;
 }
 
 SelectiveRefiner::Stats SelectiveRefiner::update(const Mt& mt, const ErrorField& field, Frontier& frontier) {
   Stats stats;
-  if (index_revision_ != mt.revision()) {
-    rebuild_index(mt);
+  // After the MT changed, meets_ still holds the status under last_field_
+  // of every fragment whose created tets did not change.
+  std::vector<FragId> changed;
+  bool carried = have_last_ && last_field_.same_shape(field) && meets_.size() <= mt.num_fragments();
+  if (index_revision_ != mt.revision() || index_instance_ != mt.instance()) {
+    carried = carried && index_instance_ == mt.instance();
+    changed = rebuild_index(mt);
     have_last_ = false;
   }
   frontier.sync(mt);
@@ -114,7 +138,7 @@ SelectiveRefiner::Stats SelectiveRefiner::update(const Mt& mt, const ErrorField&
   if (incremental) {
     incremental_update(mt, field, frontier, stats);
   } else {
-    full_update(mt, field, frontier, stats);
+    full_update(mt, field, frontier, stats, carried ? &changed : nullptr);
   }
   stats.incremental = incremental;
   last_field_ = field;
@@ -124,10 +148,21 @@ SelectiveRefiner::Stats SelectiveRefiner::update(const Mt& mt, const ErrorField&
   return stats;
 }
 
-void SelectiveRefiner::full_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats) {
-  meets_.assign(mt.num_fragments(), 0);
-  for (std::size_t f = 0; f < mt.num_fragments(); ++f) meets_[f] = fragment_meets(mt, FragId(f), field);
-  stats.fragments_tested = mt.num_fragments();
+void SelectiveRefiner::full_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats,
+                                    const std::vector<FragId>* changed) {
+  if (changed) {
+    // The others' status moves with the focus as in an incremental update;
+    // the changed ones' is found from scratch (after: the walk may have set
+    // it from a stale status).
+    meets_.resize(mt.num_fragments(), 0);
+    follow_focus(mt, field, stats);
+    for (FragId f : *changed) meets_[f.index()] = fragment_meets(mt, f, field);
+    stats.fragments_tested += changed->size();
+  } else {
+    meets_.assign(mt.num_fragments(), 0);
+    for (std::size_t f = 0; f < mt.num_fragments(); ++f) meets_[f] = fragment_meets(mt, FragId(f), field);
+    stats.fragments_tested = mt.num_fragments();
+  }
   const std::vector<FragId> order = mt.topological_order();
   const std::vector<char> in = target_membership(mt, order, meets_);
   // Leave S \ S* children first, then enter S* \ S parents first: every
@@ -145,6 +180,26 @@ void SelectiveRefiner::full_update(const Mt& mt, const ErrorField& field, Fronti
 }
 
 void SelectiveRefiner::incremental_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats) {
+  follow_focus(mt, field, stats);
+
+  // Fragments that now fail leave, and everything that depends on them.
+  for (FragId f : changed_bad_)
+    if (frontier.contains(f)) refine_with_descendants(mt, f, frontier, stats);
+  // Fragments that now meet enter once their parents are in; their children
+  // may follow.
+  queue_.assign(changed_good_.begin(), changed_good_.end());
+  while (!queue_.empty()) {
+    const FragId f = queue_.back();
+    queue_.pop_back();
+    if (!meets_[f.index()] || !frontier.can_coarsen(mt, f)) continue;
+    frontier.coarsen(mt, f);
+    ++stats.coarsened;
+    for (FragId c : mt.children(f))
+      if (c != mt.drain() && meets_[c.index()]) queue_.push_back(c);
+  }
+}
+
+void SelectiveRefiner::follow_focus(const Mt& mt, const ErrorField& field, Stats& stats) {
   const Vec3 from = last_field_.focus, to = field.focus;
   changed_bad_.clear(), changed_good_.clear();
   const auto nodes = bvh_.nodes();
@@ -178,22 +233,6 @@ void SelectiveRefiner::incremental_update(const Mt& mt, const ErrorField& field,
         }
         return true;
       });
-
-  // Fragments that now fail leave, and everything that depends on them.
-  for (FragId f : changed_bad_)
-    if (frontier.contains(f)) refine_with_descendants(mt, f, frontier, stats);
-  // Fragments that now meet enter once their parents are in; their children
-  // may follow.
-  queue_.assign(changed_good_.begin(), changed_good_.end());
-  while (!queue_.empty()) {
-    const FragId f = queue_.back();
-    queue_.pop_back();
-    if (!meets_[f.index()] || !frontier.can_coarsen(mt, f)) continue;
-    frontier.coarsen(mt, f);
-    ++stats.coarsened;
-    for (FragId c : mt.children(f))
-      if (c != mt.drain() && meets_[c.index()]) queue_.push_back(c);
-  }
 }
 
 void SelectiveRefiner::refine_with_descendants(const Mt& mt, FragId f, Frontier& frontier, Stats& stats) {

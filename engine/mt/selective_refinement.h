@@ -92,13 +92,26 @@ class SelectiveRefiner {
 
   // Moves `frontier` to S*(field). Incremental when the MT, the frontier and
   // the field's shape are as this refiner's previous call left them (only
-  // the focus moved); otherwise one full pass over the fragments.
+  // the focus moved); otherwise one full pass over the fragments. After the
+  // MT changed (a cut), that pass re-indexes and re-tests only the
+  // fragments whose created tets changed (Mt::created_revision): the others'
+  // status follows the focus as in an incremental update, from the last
+  // call's, which is exact for them.
   Stats update(const Mt& mt, const ErrorField& field, Frontier& frontier);
   std::size_t bytes() const;
 
  private:
-  void rebuild_index(const Mt& mt);
-  void full_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats);
+  // Re-indexes; returns the fragments whose created tets changed since the
+  // last index (all of them the first time).
+  std::vector<FragId> rebuild_index(const Mt& mt);
+  // `changed`: when not null, meets_ holds every other fragment's status
+  // under last_field_, and only these are tested from scratch.
+  void full_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats,
+                   const std::vector<FragId>* changed);
+  // meets_ of the fragments whose status may differ between the last
+  // field's focus and field's (the BVH walk of an incremental update),
+  // listing them in changed_good_ / changed_bad_.
+  void follow_focus(const Mt& mt, const ErrorField& field, Stats& stats);
   void incremental_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats);
   void refine_with_descendants(const Mt& mt, FragId f, Frontier& frontier, Stats& stats);
 
@@ -110,6 +123,16 @@ class SelectiveRefiner {
   std::vector<float> node_min_;     // (n_nodes) least fragment error below
   std::vector<float> node_max_;     // (n_nodes) largest fragment error below
   std::vector<char> meets_;         // (n_fragments) status under last_field_
+  // (n_fragments) what the index holds of each fragment, and the
+  // created_revision it was taken at: re-indexing reuses it when unchanged.
+  struct FragmentSummary {
+    std::uint64_t revision = ~std::uint64_t{0};
+    bool computed = false;  // box, worst_box and error hold its created tets'
+    Aabb box, worst_box;
+    float error = 0.0f;
+  };
+  std::vector<FragmentSummary> summary_;
+  std::uint64_t index_instance_ = 0;  // the Mt::instance() the index and summary_ are of
   ErrorField last_field_;
   bool have_last_ = false;
   std::uint64_t mt_revision_ = 0;
