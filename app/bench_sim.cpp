@@ -11,6 +11,7 @@
 
 #include "app/bench_timer.h"
 #include "engine/mesh_loader.h"
+#include "engine/mt/bvh.h"
 #include "engine/quantiles.h"
 #include "sim/fixed_region.h"
 #include "sim/forces.h"
@@ -132,10 +133,10 @@ nlohmann::ordered_json time_model_update(const engine::TetMesh& mesh, const sim:
                                          const sim::MaterialDef& material,
                                          const std::function<bool(engine::VertId)>& is_fixed, int runs) {
   std::vector<Vec3> positions(mesh.positions.begin(), mesh.positions.end());
-  Vec3 lo = positions.front(), hi = lo;
-  for (const Vec3& p : positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  const Vec3 centre = 0.5 * (lo + hi);
-  const double radius = 0.17 * (hi - lo).minCoeff();
+  engine::Aabb box;
+  for (const Vec3& p : positions) box.extend(p);
+  const Vec3 centre = box.center();
+  const double radius = 0.17 * (box.hi - box.lo).minCoeff();
   std::vector<engine::Tet> removed, added, tets;
   for (const engine::Tet& t : mesh.tets) {
     if ((positions[t[0].index()] - centre).norm() >= radius) {

@@ -1,9 +1,9 @@
 #include "sim/spring_model_parts.h"
 
 #include <algorithm>
-#include <limits>
 #include <numeric>
 
+#include "engine/mt/bvh.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::sim::model_parts {
@@ -32,12 +32,9 @@ ParticleOrder order_in(const Vec3& lo, const Vec3& hi) {
 
 ParticleOrder ParticleOrder::of(std::span<const Vec3> rest_positions) {
   if (rest_positions.empty()) return order_in(Vec3::Zero(), Vec3::Zero());
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const Vec3& p : rest_positions) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return order_in(lo, hi);
+  engine::Aabb box;
+  for (const Vec3& p : rest_positions) box.extend(p);
+  return order_in(box.lo, box.hi);
 }
 
 ParticleOrder ParticleOrder::of(const SpringModel& model) { return order_in(model.order_lo, model.order_hi); }

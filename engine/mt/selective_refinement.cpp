@@ -57,8 +57,9 @@ Frontier extract_frontier(const Mt& mt, const ErrorField& field) {
 }
 
 std::size_t SelectiveRefiner::bytes() const {
-  return bvh_.bytes() + indexed_.capacity() * sizeof(FragId) + (frag_box_.capacity() + worst_box_.capacity()) * sizeof(Aabb) +
-         (frag_error_.capacity() + node_min_.capacity() + node_max_.capacity()) * sizeof(float) + meets_.capacity();
+  return bvh_.bytes() + indexed_.capacity() * sizeof(FragId) + frag_box_.capacity() * sizeof(Aabb) +
+         (node_min_.capacity() + node_max_.capacity()) * sizeof(float) + meets_.capacity() +
+         summary_.capacity() * sizeof(FragmentSummary);
 }
 
 std::vector<FragId> SelectiveRefiner::rebuild_index(const Mt& mt) {
@@ -68,7 +69,7 @@ std::vector<FragId> SelectiveRefiner::rebuild_index(const Mt& mt) {
   index_instance_ = mt.instance();
   summary_.resize(mt.num_fragments());
   std::vector<FragId> changed;
-  indexed_.clear(), frag_box_.clear(), worst_box_.clear(), frag_error_.clear();
+  indexed_.clear(), frag_box_.clear();
   for (std::size_t i = 0; i < mt.num_fragments(); ++i) {
     const FragId f(i);
     FragmentSummary& summary = summary_[i];
@@ -92,11 +93,9 @@ std::vector<FragId> SelectiveRefiner::rebuild_index(const Mt& mt) {
     }
     indexed_.push_back(f);
     frag_box_.push_back(summary.box);
-    worst_box_.push_back(summary.worst_box);
-    frag_error_.push_back(summary.error);
   }
-  std::vector<std::int32_t> levels(frag_error_.size());
-  for (std::size_t i = 0; i < levels.size(); ++i) levels[i] = error_level(frag_error_[i]);
+  std::vector<std::int32_t> levels(indexed_.size());
+  for (std::size_t i = 0; i < levels.size(); ++i) levels[i] = error_level(item_summary(i).error);
   bvh_.build(frag_box_, levels, 2);
   // Error bounds bottom-up: children always follow their parent in the array.
   const auto nodes = bvh_.nodes();
@@ -105,9 +104,10 @@ std::vector<FragId> SelectiveRefiner::rebuild_index(const Mt& mt) {
   for (std::size_t n = nodes.size(); n-- > 0;) {
     const BvhNode& node = nodes[n];
     if (node.leaf()) {
-      float lo = frag_error_[static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(node.first)])], hi = lo;
+      float lo = item_summary(static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(node.first)])).error,
+            hi = lo;
       for (std::int32_t i = node.first; i < node.first + node.count; ++i) {
-        const float e = frag_error_[static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(i)])];
+        const float e = item_summary(static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(i)])).error;
         lo = std::min(lo, e), hi = std::max(hi, e);
       }
       node_min_[n] = lo, node_max_[n] = hi;
@@ -217,11 +217,12 @@ void SelectiveRefiner::follow_focus(const Mt& mt, const ErrorField& field, Stats
         const BvhNode& node = nodes[static_cast<std::size_t>(n)];
         for (std::int32_t k = node.first; k < node.first + node.count; ++k) {
           const auto item = static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(k)]);
-          if (unchanged(frag_box_[item], frag_error_[item], frag_error_[item])) continue;
+          const FragmentSummary& summary = item_summary(item);
+          if (unchanged(summary.box, summary.error, summary.error)) continue;
           // The largest-error tet decides "fails" exactly (tet_meets' own test).
-          const double e = frag_error_[item];
-          const bool fails_before = e > field.threshold(worst_box_[item].min_distance(from));
-          const bool fails_after = e > field.threshold(worst_box_[item].min_distance(to));
+          const double e = summary.error;
+          const bool fails_before = e > field.threshold(summary.worst_box.min_distance(from));
+          const bool fails_after = e > field.threshold(summary.worst_box.min_distance(to));
           if (fails_before && fails_after) continue;
           const FragId f = indexed_[item];
           ++stats.fragments_tested;

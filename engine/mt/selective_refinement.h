@@ -117,9 +117,7 @@ class SelectiveRefiner {
 
   Bvh bvh_;                         // over indexed fragments
   std::vector<FragId> indexed_;     // (n_items) fragment of each BVH item
-  std::vector<Aabb> frag_box_;      // (n_items) box of its created tets
-  std::vector<Aabb> worst_box_;     // (n_items) box of its largest-error tet
-  std::vector<float> frag_error_;   // (n_items) its error
+  std::vector<Aabb> frag_box_;      // (n_items) box of its created tets (what the BVH is built over)
   std::vector<float> node_min_;     // (n_nodes) least fragment error below
   std::vector<float> node_max_;     // (n_nodes) largest fragment error below
   std::vector<char> meets_;         // (n_fragments) status under last_field_
@@ -132,6 +130,8 @@ class SelectiveRefiner {
     float error = 0.0f;
   };
   std::vector<FragmentSummary> summary_;
+  // BVH item `item`'s fragment's summary.
+  const FragmentSummary& item_summary(std::size_t item) const { return summary_[indexed_[item].index()]; }
   std::uint64_t index_instance_ = 0;  // the Mt::instance() the index and summary_ are of
   ErrorField last_field_;
   bool have_last_ = false;
