@@ -232,9 +232,8 @@ SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, cons
   for (std::size_t p = 0; p < n; ++p) {
     const VertId u = model.particle_vertex[p];
     Source source = Source::kKept;
-    if (const std::int32_t old = u.index() < snapshot.particle_of.size() ? snapshot.particle_of[u.index()] : -1;
-        old >= 0) {  // the common case, copied as sample() would without a Sample in between
-      const auto q = static_cast<std::size_t>(old);
+    if (simulated(u)) {  // the common case: sample()'s first branch, without a Sample in between
+      const auto q = static_cast<std::size_t>(snapshot.particle_of[u.index()]);
       state.x[p] = snapshot.x[q];
       state.v[p] = snapshot.v[q];
       if (carried)

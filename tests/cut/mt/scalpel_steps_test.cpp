@@ -60,10 +60,11 @@ void cut_steps(const std::string& name, int steps, Path&& path) {
 // then lie on the new plane up to rounding and snap onto it: the cut surface
 // bends through them only in the resolutions that hold them, and a
 // fragment's two tessellations stop covering the same region. Traced on the
-// ellipsoid (step 5): the vertex copies earlier steps made lie on the plane
-// with sides decided by rounding, so an edge between two copies of one side
-// "straddles"; its cut point (at the 1e-6 snap floor) and the face points
-// beside it land on the plane with the copy, and the LUT makes a flat tet.
+// ellipsoid (step 5): the vertices earlier steps made lie on the plane with
+// sides decided by rounding (or by their neighbours' lean, when kept off the
+// cut), so an edge between two of them can "straddle"; its cut point (at the
+// 1e-6 snap floor) and the face points beside it land on the plane with its
+// ends, and the LUT makes a flat tet.
 // Making such vertices kOnInactive is wrong (a crack copy belongs to one
 // side: step 6 then joins a - and a + copy); a vertex would have to carry
 // the plane and side it was made on, for a later cut in that plane. The World
