@@ -23,18 +23,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The side a tet that is not cut lies on: the side of its strict vertices,
-// or, when all four are on the cut, the side its vertices lean to.
-VertexState side_of_uncut(const Tet& tet, const CutClassifier& cls) {
-  for (VertId v : tet) {
-    const VertexState s = cls.state(v);
-    if (is_strict(s)) return s;
-  }
-  double lean = 0;
-  for (VertId v : tet) lean += cls.polygon().signed_distance(cls.positions()[v.index()]);
-  return lean < 0 ? VertexState::kNeg : VertexState::kPos;
-}
-
 }  // namespace
 
 std::size_t count_pieces(const TetMesh& mesh) {
@@ -145,7 +133,7 @@ MeshCutResult cut_once(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
   auto relabel = [&](std::size_t t) {
     Tet& tet = mesh.tets[t];
     if (std::none_of(tet.begin(), tet.end(), [&](VertId v) { return split_vertex[v.index()] != 0; })) return;
-    if (side_of_uncut(tet, cls) == VertexState::kPos) return;  // the positive side keeps the vertex
+    if (cls.side_of_uncut(tet) == VertexState::kPos) return;  // the positive side keeps the vertex
     for (VertId& v : tet) {
       if (!split_vertex[v.index()]) continue;
       PointKey key;

@@ -301,6 +301,16 @@ bool CutClassifier::covered(EdgeInfo& e, VertId a, VertId b) const {
   return e.covered == 1;
 }
 
+VertexState CutClassifier::side_of_uncut(const Tet& tet) const {
+  for (VertId v : tet) {
+    const VertexState s = state(v);
+    if (is_strict(s)) return s;
+  }
+  double lean = 0;
+  for (VertId v : tet) lean += polygon_.signed_distance(positions_[v.index()]);
+  return lean < 0 ? VertexState::kNeg : VertexState::kPos;
+}
+
 TetConfig CutClassifier::configure(const Tet& tet) const {
   std::array<std::int32_t, 6> unused;
   return configure(tet, unused);

@@ -177,6 +177,10 @@ class CutClassifier {
   bool crossing_covered(VertId a, VertId b) const;
 
   TetConfig configure(const Tet& tet) const;
+  // The side a tet that is not cut lies on (after finalize): the side of its
+  // strict vertices, or, when all four are on the cut, the side its vertices
+  // lean to.
+  VertexState side_of_uncut(const Tet& tet) const;
   // The same, and the number of each local edge (kTetEdges) that straddles
   // the plane, -1 for the others: straddling edges are numbered 0, 1, ... as
   // the classifier first meets them, so a caller can keep per-edge data (the

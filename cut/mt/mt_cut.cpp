@@ -25,18 +25,6 @@ using engine::kTetFaces;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// The side a tet that is not cut lies on: the side of its strict vertices,
-// or, when none is strict, the side its vertices lean to.
-VertexState side_of_uncut(const Tet& tet, const CutClassifier& cls) {
-  for (VertId v : tet) {
-    const VertexState s = cls.state(v);
-    if (is_strict(s)) return s;
-  }
-  double lean = 0;
-  for (VertId v : tet) lean += cls.polygon().signed_distance(cls.positions()[v.index()]);
-  return lean < 0 ? VertexState::kNeg : VertexState::kPos;
-}
-
 PointKey copy_key(VertId v) {
   PointKey key;
   key.kind = PointKind::kVertexCopy;
@@ -148,7 +136,7 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
     const Tet& tet = mt.tet(found[i]);
     configs[i] = classifier.configure(tet, edge_numbers[i]);
     split[i] = configs[i].is_cut();
-    positive[i] = !split[i] && side_of_uncut(tet, classifier) == VertexState::kPos;
+    positive[i] = !split[i] && classifier.side_of_uncut(tet) == VertexState::kPos;
   }
   // A vertex the cut passes through is split only when it separates
   // something: a tet around it is split or on the positive side (which keeps
