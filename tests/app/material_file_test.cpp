@@ -2,37 +2,19 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 
 #include "engine/input_error.h"
+#include "tests/temp_dir.h"
 
 namespace mtcut::app {
 namespace {
-namespace fs = std::filesystem;
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const engine::InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::input_error_of;
 
 class MaterialFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mtcut-material-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& text) const {
-    const std::string path = (dir_ / "m.toml").string();
-    std::ofstream(path) << text;
-    return path;
-  }
-  fs::path dir_;
+  std::string write(const std::string& text) const { return dir_.write("m.toml", text); }
+  test::TempDir dir_;
 };
 
 TEST_F(MaterialFile, EveryShippedPresetLoads) {
@@ -46,15 +28,15 @@ TEST_F(MaterialFile, EveryShippedPresetLoads) {
 }
 
 TEST_F(MaterialFile, FaultsNameTheFileAndLine) {
-  EXPECT_NE(message_of([&] { load_material(write("density = 1000\nyoungs_modulus = 5\nstiffnes = 3\n")); })
+  EXPECT_NE(input_error_of([&] { load_material(write("density = 1000\nyoungs_modulus = 5\nstiffnes = 3\n")); })
                 .find("m.toml:3: unknown key 'stiffnes'"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { load_material(write("density = \"heavy\"\n")); }).find("m.toml:1: 'density' must be"),
+  EXPECT_NE(input_error_of([&] { load_material(write("density = \"heavy\"\n")); }).find("m.toml:1: 'density' must be"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { load_material(write("\nyoungs_modulus = -3\n")); }).find("m.toml:2:"),
+  EXPECT_NE(input_error_of([&] { load_material(write("\nyoungs_modulus = -3\n")); }).find("m.toml:2:"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { load_material(write("density = [1, \n")); }).find("m.toml:"), std::string::npos);
-  EXPECT_NE(message_of([] { load_material("spleen"); }).find("no such preset"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { load_material(write("density = [1, \n")); }).find("m.toml:"), std::string::npos);
+  EXPECT_NE(input_error_of([] { load_material("spleen"); }).find("no such preset"), std::string::npos);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/app/run_mtcut.h"
+#include "tests/temp_dir.h"
 #include "tests/test_paths.h"
 
 namespace mtcut::test {
@@ -16,16 +17,8 @@ namespace fs = std::filesystem;
 
 class MeshCommand : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mtcut-mesh-cmd-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name)) << text;
-    return path(name);
-  }
+  std::string path(const std::string& name) const { return dir_.file(name); }
+  std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
   // Expects a one-line error naming `what` and exit code 1, and no output file.
   void expect_rejected(const std::string& input, const std::string& what) const {
     const std::string out = path("out.vtu");
@@ -35,10 +28,10 @@ class MeshCommand : public ::testing::Test {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_EQ(r.out, "");
     EXPECT_FALSE(fs::exists(out)) << input;
-    for (const auto& entry : fs::directory_iterator(dir_))
+    for (const auto& entry : fs::directory_iterator(dir_.path()))
       EXPECT_EQ(entry.path().filename().string().rfind(".tmp-", 0), std::string::npos) << "left " << entry.path();
   }
-  fs::path dir_;
+  TempDir dir_;
 };
 
 TEST_F(MeshCommand, Liver2JsonHasTheStatistics) {

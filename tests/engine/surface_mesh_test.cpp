@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 
 #include "engine/builtin_shapes.h"
 #include "engine/input_error.h"
+#include "tests/temp_dir.h"
 #include "tests/test_paths.h"
 
 namespace mtcut::engine {
@@ -15,27 +15,12 @@ namespace fs = std::filesystem;
 
 class SurfaceFiles : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mtcut-surface-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name)) << text;
-    return path(name);
-  }
-  fs::path dir_;
+  std::string path(const std::string& name) const { return dir_.file(name); }
+  std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
+  mtcut::test::TempDir dir_;
 };
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using mtcut::test::input_error_of;
 
 TEST_F(SurfaceFiles, ReadsTheRealSurfaces) {
   const SurfaceMesh liver = read_surface_file(test::shared_mesh("liver.obj"));
@@ -80,24 +65,24 @@ TEST_F(SurfaceFiles, EveryFormatRoundTrips) {
 }
 
 TEST_F(SurfaceFiles, BadFilesGiveOneClearLine) {
-  EXPECT_NE(message_of([&] { read_surface_file(path("missing.obj")); }).find("missing.obj: no such file"),
+  EXPECT_NE(input_error_of([&] { read_surface_file(path("missing.obj")); }).find("missing.obj: no such file"),
             std::string::npos);
   const std::string empty = write("empty.obj", "");
-  EXPECT_NE(message_of([&] { read_surface_file(empty); }).find("empty.obj: the file is empty"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { read_surface_file(empty); }).find("empty.obj: the file is empty"), std::string::npos);
   const std::string nan = write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n");
-  const std::string m = message_of([&] { read_surface_file(nan); });
+  const std::string m = input_error_of([&] { read_surface_file(nan); });
   EXPECT_NE(m.find("nan.obj: line 2: non-finite coordinate 'nan'"), std::string::npos) << m;
   const std::string inf = write("inf.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 -inf 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
-  EXPECT_NE(message_of([&] { read_surface_file(inf); }).find("inf.off: line 5"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { read_surface_file(inf); }).find("inf.off: line 5"), std::string::npos);
   const std::string nofaces = write("nofaces.obj", "v 0 0 0\nv 1 0 0\n");
-  EXPECT_NE(message_of([&] { read_surface_file(nofaces); }).find("no faces"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { read_surface_file(nofaces); }).find("no faces"), std::string::npos);
 }
 
 TEST_F(SurfaceFiles, FailedWriteLeavesNothingBehind) {
   SurfaceMesh s = make_builtin_surface(BuiltinShapeDef{BuiltinShape::kBox, Vec3(1, 1, 1), 10});
   EXPECT_THROW(write_surface_file(s, path("nodir/out.obj")), InputError);
   EXPECT_THROW(write_surface_file(s, path("out.xyz")), InputError);
-  EXPECT_TRUE(fs::is_empty(dir_));
+  EXPECT_TRUE(fs::is_empty(dir_.path()));
 }
 
 }  // namespace

@@ -8,19 +8,13 @@
 #include "engine/input_error.h"
 #include "engine/mesh_loader.h"
 #include "engine/mesh_stats.h"
+#include "tests/temp_dir.h"
 #include "tests/test_paths.h"
 
 namespace mtcut::engine {
 namespace {
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using mtcut::test::input_error_of;
 
 SurfaceMesh unit_box() { return make_builtin_surface(BuiltinShapeDef{BuiltinShape::kBox, Vec3(1, 1, 1), 10}); }
 
@@ -60,7 +54,7 @@ TEST(Tetrahedralize, QualityRaisesTheSmallestAngle) {
 TEST(Tetrahedralize, SurfaceWithAHoleIsRejected) {
   SurfaceMesh box = unit_box();
   box.triangles.pop_back();
-  const std::string m = message_of([&] { tetrahedralize(box, {}, "holey.obj"); });
+  const std::string m = input_error_of([&] { tetrahedralize(box, {}, "holey.obj"); });
   EXPECT_NE(m.find("holey.obj: the surface is not closed"), std::string::npos) << m;
 }
 
@@ -71,7 +65,7 @@ TEST(Tetrahedralize, SelfIntersectingSurfaceNamesTheFaces) {
   const auto offset = static_cast<std::int32_t>(a.positions.size());
   for (const auto& p : b.positions) a.positions.push_back(p + Vec3(0.5, 0.3, 0.2));
   for (const auto& t : b.triangles) a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-  const std::string m = message_of([&] { tetrahedralize(a, {}, "twoboxes.obj"); });
+  const std::string m = input_error_of([&] { tetrahedralize(a, {}, "twoboxes.obj"); });
   EXPECT_NE(m.find("twoboxes.obj: the surface intersects itself"), std::string::npos) << m;
   EXPECT_NE(m.find("triangles"), std::string::npos) << m;
 }
@@ -95,7 +89,7 @@ TEST(MeshLoader, LoadsEveryGoodSharedMeshAndRejectsTheBrokenOnes) {
     const std::string name = entry.path().filename().string();
     if (name == "README.md") continue;
     if (name.find("_broken") != std::string::npos) {
-      const std::string m = message_of([&] { load_mesh(path, def); });
+      const std::string m = input_error_of([&] { load_mesh(path, def); });
       EXPECT_NE(m, "no error") << name;
       EXPECT_NE(m.find(name), std::string::npos) << m;
       EXPECT_EQ(m.find('\n'), std::string::npos) << m;
@@ -109,8 +103,8 @@ TEST(MeshLoader, LoadsEveryGoodSharedMeshAndRejectsTheBrokenOnes) {
 }
 
 TEST(MeshLoader, UnknownFormatsAndShapesAreRejected) {
-  EXPECT_NE(message_of([] { load_mesh("organ.xyz", {}); }).find("organ.xyz: unknown mesh format"), std::string::npos);
-  EXPECT_NE(message_of([] { load_mesh("builtin:heart", {}); }).find("unknown built-in shape"), std::string::npos);
+  EXPECT_NE(input_error_of([] { load_mesh("organ.xyz", {}); }).find("organ.xyz: unknown mesh format"), std::string::npos);
+  EXPECT_NE(input_error_of([] { load_mesh("builtin:heart", {}); }).find("unknown built-in shape"), std::string::npos);
 }
 
 }  // namespace

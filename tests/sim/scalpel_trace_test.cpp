@@ -3,32 +3,22 @@
 #include "sim/scalpel_trace.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <bit>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <random>
 
 #include "engine/input_error.h"
+#include "tests/temp_dir.h"
 
 namespace mtcut::sim {
 namespace {
-namespace fs = std::filesystem;
 
 class ScalpelTrace : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mtcut-trace-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::string write(const std::string& text) const {
-    std::ofstream(path("t.csv")) << text;
-    return path("t.csv");
-  }
+  std::string path(const std::string& name) const { return dir_.file(name); }
+  std::string write(const std::string& text) const { return dir_.write("t.csv", text); }
   // The message of reading `text`, which must fail.
   std::string error_of(const std::string& text) const {
     try {
@@ -39,7 +29,7 @@ class ScalpelTrace : public ::testing::Test {
     ADD_FAILURE() << "accepted:\n" << text;
     return "";
   }
-  fs::path dir_;
+  mtcut::test::TempDir dir_;
 };
 
 const std::string kHeader = std::string(kScalpelTraceHeader) + "\n";

@@ -3,26 +3,16 @@
 #include "app/hid/profile_file.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
 #include <functional>
 
 #include "engine/input_error.h"
+#include "tests/temp_dir.h"
 
 namespace mtcut::app::hid {
 namespace {
-namespace fs = std::filesystem;
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const engine::InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using mtcut::test::input_error_of;
 
 // A minimal valid profile; tests replace parts of it.
 const std::string kValid =
@@ -41,24 +31,16 @@ const std::string kValid =
 
 class HidProfileFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mtcut-hidprofile-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path() const { return (dir_ / "p.toml").string(); }
-  std::string write(const std::string& text) const {
-    std::ofstream(path()) << text;
-    return path();
-  }
+  std::string path() const { return dir_.file("p.toml"); }
+  std::string write(const std::string& text) const { return dir_.write("p.toml", text); }
   // kValid with `from` replaced by `to`.
   std::string fault(const std::string& from, const std::string& to) const {
     std::string text = kValid;
     const auto at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
-    return message_of([&] { load_profile(write(text.replace(at, from.size(), to))); });
+    return input_error_of([&] { load_profile(write(text.replace(at, from.size(), to))); });
   }
-  fs::path dir_;
+  mtcut::test::TempDir dir_;
 };
 
 TEST_F(HidProfileFile, EveryShippedProfileLoads) {
@@ -120,7 +102,7 @@ TEST_F(HidProfileFile, FaultsNameTheFileAndLine) {
   EXPECT_NE(fault("target = \"x\"", "target = \"tilt_x\"").find("p.toml:12: tilt axes need mode = \"absolute\""),
             std::string::npos);
   EXPECT_NE(fault("fields = [\n", "fields = [,\n").find("p.toml:6:"), std::string::npos);  // TOML syntax
-  EXPECT_NE(message_of([] { load_profile("trackball"); }).find("HID profile 'trackball': no such profile"),
+  EXPECT_NE(input_error_of([] { load_profile("trackball"); }).find("HID profile 'trackball': no such profile"),
             std::string::npos);
 }
 

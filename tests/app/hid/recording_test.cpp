@@ -4,41 +4,25 @@
 #include "app/hid/recording.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
 #include <functional>
 
 #include "app/hid/profile_file.h"
 #include "engine/input_error.h"
+#include "tests/temp_dir.h"
 #include "tests/app/hid/hid_test_util.h"
 
 namespace mtcut::app::hid {
 namespace {
-namespace fs = std::filesystem;
 
 class HidRecording : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mtcut-hidrec-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::string write(const std::string& text) const {
-    std::ofstream(path("r.hidrec")) << text;
-    return path("r.hidrec");
-  }
+  std::string path(const std::string& name) const { return dir_.file(name); }
+  std::string write(const std::string& text) const { return dir_.write("r.hidrec", text); }
   std::string error_of(const std::string& text) const {
-    try {
-      read_recording(write(text));
-    } catch (const engine::InputError& e) {
-      return e.what();
-    }
-    return "no error";
+    return mtcut::test::input_error_of([&] { read_recording(write(text)); });
   }
-  fs::path dir_;
+  mtcut::test::TempDir dir_;
 };
 
 TEST_F(HidRecording, RoundTripsEventsExactly) {

@@ -1,6 +1,6 @@
 #pragma once
-// Helpers for the mesh file tests: a temporary folder that cleans up after
-// itself, writing hand-made files into it, a small valid tet mesh, the
+// Helpers for the mesh file tests: a temporary folder (tests/temp_dir.h)
+// to write hand-made files into, a small valid tet mesh, the
 // expectation that a call fails with an InputError naming given things, and
 // a cap on file sizes that makes a write fail half-way.
 
@@ -20,6 +20,7 @@
 #include "engine/input_error.h"
 #include "engine/io/mesh_file.h"
 #include "engine/tet_mesh.h"
+#include "tests/temp_dir.h"
 #include "tests/test_paths.h"
 
 namespace mtcut::engine::test {
@@ -28,42 +29,7 @@ namespace mtcut::engine::test {
 // by meshio 5.3.5, an independent writer, in the formats named by the file.
 inline std::string io_data(const std::string& name) { return mtcut::test::source_path("tests/engine/io/data/" + name); }
 
-// A fresh folder under the system temp folder, removed with its contents.
-class TempDir {
- public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("mtcut-io-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  // The path of name inside the folder.
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  // Writes bytes to name inside the folder; returns its path.
-  std::string write(const std::string& name, const std::string& bytes) const {
-    const std::string p = file(name);
-    std::ofstream out(p, std::ios::binary);
-    out << bytes;
-    return p;
-  }
-  // Every entry in the folder, by name.
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(path_)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  std::filesystem::path path_;
-};
+using mtcut::test::TempDir;
 
 inline std::string read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
