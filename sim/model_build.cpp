@@ -45,4 +45,8 @@ ModelBuild::ModelBuild(ModelInputs inputs, WorkerThread* worker)
     : model_(worker ? worker->submit([in = std::move(inputs)] { return in.build(); })
                     : std::async(std::launch::deferred, [in = std::move(inputs)] { return in.build(); })) {}
 
+ModelBuild::ModelBuild(std::function<ModelInputs()> gather, WorkerThread* worker)
+    : model_(worker ? worker->submit([gather = std::move(gather)] { return gather().build(); })
+                    : std::async(std::launch::deferred, [gather = std::move(gather)] { return gather().build(); })) {}
+
 }  // namespace mtcut::sim

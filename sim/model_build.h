@@ -18,6 +18,7 @@
 // run on one long-lived WorkerThread (worker_thread.h says why not a thread
 // per build).
 
+#include <chrono>
 #include <functional>
 #include <future>
 #include <span>
@@ -60,10 +61,21 @@ struct ModelInputs {
 
 class ModelBuild {
  public:
+  // No build (nothing to take).
+  ModelBuild() = default;
   // Starts building on `worker`, or, without one, when taken, on the taker's thread.
   ModelBuild(ModelInputs inputs, WorkerThread* worker);
+  // The same, gathering the inputs there too: `gather` runs on the worker
+  // (or when taken), so what it reads must stay as it is until the build is
+  // taken or waited for.
+  ModelBuild(std::function<ModelInputs()> gather, WorkerThread* worker);
   // Waits for the model; rethrows what the build threw. Once.
   SpringModel take() { return model_.get(); }
+  // Waits until a build started on a worker has run, without taking it (a
+  // build left for the taker's thread does not run).
+  void wait() const {
+    if (model_.valid() && model_.wait_for(std::chrono::seconds(0)) != std::future_status::deferred) model_.wait();
+  }
 
  private:
   std::future<SpringModel> model_;

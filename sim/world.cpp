@@ -42,7 +42,10 @@ struct World::CutSprings {
   OriginIndex origins;           // of the vertices it made
 };
 
-World::~World() = default;
+World::~World() {
+  // A pending move's build reads members destroyed before the worker joins.
+  if (lod_move_) lod_move_->springs.wait();
+}
 
 World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt)), bvh_(mt_) {
   if (def_.lod.background_build) builder_ = std::make_unique<WorkerThread>();
@@ -93,6 +96,20 @@ ModelBuild World::start_model_build(const engine::Frontier& frontier, std::span<
                                                                        def_.material, def_.fixed)
                                             : ModelInputs::of(mt_, frontier, def_.material, def_.fixed),
                     builder_.get());
+}
+
+ModelBuild World::start_move_build(const engine::Frontier& target) const {
+  // Everything the build reads stays as it is until the move is taken: the
+  // MT and frontier_ (a cut stage takes a pending move before it cuts, and
+  // the refiner waits for it), model_ and `target` (the move's own).
+  if (!def_.lod.update_springs) return start_model_build(target, {}, {});
+  return ModelBuild(
+      [this, &target] {
+        return ModelInputs::change_from(
+            model_, frontier_.tets(), [this](engine::TetId t) { return frontier_.has_tet(t); }, mt_, target,
+            def_.material, def_.fixed);
+      },
+      builder_.get());
 }
 
 void World::take_lod_move(FrameMetrics& m) {
@@ -196,10 +213,9 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
       m.lod_changes = stats.refined + stats.coarsened;
       take_cut();
       if (lod_target_.version() != frontier_.version()) {
-        ModelBuild springs = start_model_build(lod_target_, frontier_.tets(),
-                                               [this](engine::TetId t) { return frontier_.has_tet(t); });
         const auto take_at = frame_ + static_cast<std::uint64_t>(std::max(1, def_.lod.build_frames));
-        lod_move_.emplace(LodMove{std::move(lod_target_), std::move(springs), take_at});
+        lod_move_.emplace(LodMove{std::move(lod_target_), ModelBuild(), take_at});
+        lod_move_->springs = start_move_build(lod_move_->frontier);
       }
     }
   }
