@@ -43,8 +43,9 @@ struct World::CutSprings {
 };
 
 World::~World() {
-  // A pending move's build reads members destroyed before the worker joins.
+  // Pending builds read members destroyed before the worker joins.
   if (lod_move_) lod_move_->springs.wait();
+  if (cut_springs_) cut_springs_->springs.wait();
 }
 
 World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt)), bvh_(mt_) {
@@ -88,26 +89,18 @@ void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, const O
 }
 
 ModelBuild World::start_model_build(const engine::Frontier& frontier, std::span<const engine::TetId> model_tets,
-                                    const std::function<bool(engine::TetId)>& in_model) const {
-  // model_ stays as it is until the build is taken: every adoption takes
-  // the pending build first (a cut takes a pending move; a move starts
-  // once the cut's springs are taken).
-  return ModelBuild(def_.lod.update_springs ? ModelInputs::change_from(model_, model_tets, in_model, mt_, frontier,
-                                                                       def_.material, def_.fixed)
-                                            : ModelInputs::of(mt_, frontier, def_.material, def_.fixed),
-                    builder_.get());
-}
-
-ModelBuild World::start_move_build(const engine::Frontier& target) const {
-  // Everything the build reads stays as it is until the move is taken: the
-  // MT and frontier_ (a cut stage takes a pending move before it cuts, and
-  // the refiner waits for it), model_ and `target` (the move's own).
-  if (!def_.lod.update_springs) return start_model_build(target, {}, {});
+                                    std::function<bool(engine::TetId)> in_model) const {
+  if (!def_.lod.update_springs)
+    return ModelBuild(ModelInputs::of(mt_, frontier, def_.material, def_.fixed), builder_.get());
+  // The change is gathered where the build runs, off the frame's thread.
+  // What it reads stays as it is until the build is taken: model_ (every
+  // adoption takes the pending build first), the MT and frontier_ (a cut
+  // stage takes a pending move before it cuts; a cut's springs are taken in
+  // the frame's LOD stage, before the next cut stage), and what the caller
+  // keeps for it (the move's frontier, the cut's snapshot).
   return ModelBuild(
-      [this, &target] {
-        return ModelInputs::change_from(
-            model_, frontier_.tets(), [this](engine::TetId t) { return frontier_.has_tet(t); }, mt_, target,
-            def_.material, def_.fixed);
+      [this, &frontier, model_tets, in_model = std::move(in_model)] {
+        return ModelInputs::change_from(model_, model_tets, in_model, mt_, frontier, def_.material, def_.fixed);
       },
       builder_.get());
 }
@@ -125,7 +118,9 @@ void World::take_lod_move(FrameMetrics& m) {
 void World::take_cut_springs(FrameMetrics& m) {
   if (!cut_springs_) return;
   const std::unique_ptr<CutSprings> cut = std::move(cut_springs_);
-  adopt_model(cut->springs.take(), std::move(cut->snapshot), &cut->origins, m);
+  // Taken before the snapshot moves: the build reads it until it ends.
+  SpringModel model = cut->springs.take();
+  adopt_model(std::move(model), std::move(cut->snapshot), &cut->origins, m);
 }
 
 void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
@@ -172,8 +167,10 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     OriginIndex origins;
     for (const auto& made : result.changes.made_vertices)
       origins.by_vertex[made.id.value] = VertexOrigin{made.source.parents, made.source.weights};
-    ModelBuild springs = start_model_build(frontier_, snapshot.simulated_tets.members(), was_simulated);
-    cut_springs_ = std::make_unique<CutSprings>(CutSprings{std::move(springs), std::move(snapshot), std::move(origins)});
+    cut_springs_ = std::make_unique<CutSprings>(CutSprings{ModelBuild(), std::move(snapshot), std::move(origins)});
+    const DeformationSnapshot& before = cut_springs_->snapshot;
+    cut_springs_->springs = start_model_build(frontier_, before.simulated_tets.members(),
+                                              [&before](engine::TetId t) { return before.simulated(t); });
   }
 }
 
@@ -215,7 +212,8 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
       if (lod_target_.version() != frontier_.version()) {
         const auto take_at = frame_ + static_cast<std::uint64_t>(std::max(1, def_.lod.build_frames));
         lod_move_.emplace(LodMove{std::move(lod_target_), ModelBuild(), take_at});
-        lod_move_->springs = start_move_build(lod_move_->frontier);
+        lod_move_->springs = start_model_build(lod_move_->frontier, frontier_.tets(),
+                                               [this](engine::TetId t) { return frontier_.has_tet(t); });
       }
     }
   }

@@ -118,11 +118,10 @@ class World {
   // Starts building springs on `frontier` (in the background unless def.lod
   // says inline): updating model_, which is on the tets `model_tets`
   // (in_model tells them), unless def.lod says to build from every tet.
+  // The update's inputs are gathered by the build: `frontier`, the storage
+  // of `model_tets` and what `in_model` reads must outlive it.
   ModelBuild start_model_build(const engine::Frontier& frontier, std::span<const engine::TetId> model_tets,
-                               const std::function<bool(engine::TetId)>& in_model) const;
-  // Starts building the springs of an LOD move to `target` (the move's
-  // frontier): the inputs are gathered where the build runs, off the frame.
-  ModelBuild start_move_build(const engine::Frontier& target) const;
+                               std::function<bool(engine::TetId)> in_model) const;
   // Takes the pending LOD move, if any: frontier, springs, state.
   void take_lod_move(FrameMetrics& m);
   // Takes the springs of this frame's cut, if building: model and state.
