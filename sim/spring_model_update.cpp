@@ -40,7 +40,11 @@ class ChangeSums {
   // Takes the tet's terms out (sign -1) or puts them in (+1).
   void apply(const Tet& tet, std::span<const Vec3> rest_positions, int sign) {
     std::array<Vec3, 4> corners;
-    for (int k = 0; k < 4; ++k) corners[k] = rest_positions[tet[k].index()];
+    for (int k = 0; k < 4; ++k) {
+      if (tet[k].index() >= rest_positions.size())  // checked before it is read
+        throw std::invalid_argument("update_spring_model: a tet has a vertex the rest positions do not");
+      corners[k] = rest_positions[tet[k].index()];
+    }
     const double volume = engine::signed_volume(corners[0], corners[1], corners[2], corners[3]);
     const FixedVolume fixed = sign * to_fixed_volume(volume);
     for (const VertId v : tet) {
@@ -106,10 +110,9 @@ class ChangeSums {
     if (tets < 0) throw std::invalid_argument("update_spring_model: a tet was removed twice or never added");
   }
 
-  // v's old particle (>= 0) or new particle (-2 - index), made on addition.
+  // v's old particle (>= 0) or new particle (-2 - index), made on addition
+  // (v has a rest position: apply() checked).
   std::int32_t slot_of(VertId v, int sign) {
-    if (v.index() >= slot_.size())
-      throw std::invalid_argument("update_spring_model: a tet has a vertex the rest positions do not");
     std::int32_t& slot = slot_[v.index()];
     if (slot == -1) {
       if (sign < 0) throw std::invalid_argument("update_spring_model: a removed tet's vertex is not a particle");
