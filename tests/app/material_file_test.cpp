@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-
 #include "engine/input_error.h"
 #include "tests/temp_dir.h"
 

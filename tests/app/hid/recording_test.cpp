@@ -9,8 +9,8 @@
 
 #include "app/hid/profile_file.h"
 #include "engine/input_error.h"
-#include "tests/temp_dir.h"
 #include "tests/app/hid/hid_test_util.h"
+#include "tests/temp_dir.h"
 
 namespace mtcut::app::hid {
 namespace {
