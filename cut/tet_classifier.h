@@ -177,10 +177,6 @@ class CutClassifier {
   bool crossing_covered(VertId a, VertId b) const;
 
   TetConfig configure(const Tet& tet) const;
-  // The side a tet that is not cut lies on (after finalize): the side of its
-  // strict vertices, or, when all four are on the cut, the side its vertices
-  // lean to.
-  VertexState side_of_uncut(const Tet& tet) const;
   // The same, and the number of each local edge (kTetEdges) that straddles
   // the plane, -1 for the others: straddling edges are numbered 0, 1, ... as
   // the classifier first meets them, so a caller can keep per-edge data (the
@@ -188,6 +184,10 @@ class CutClassifier {
   TetConfig configure(const Tet& tet, std::array<std::int32_t, 6>& edge_numbers) const;
   // Edges numbered so far (an upper bound of the numbers configure gives).
   std::size_t edges_numbered() const { return edges_.size(); }
+  // The side a tet that is not cut lies on (after finalize): the side of its
+  // strict vertices, or, when all four are on the cut, the side its vertices
+  // lean to.
+  VertexState side_of_uncut(const Tet& tet) const;
 
   // A new point on a face, with barycentric weights on the face's vertices
   // (in the order given), so that rest and deformed positions both follow.
