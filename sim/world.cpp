@@ -55,9 +55,9 @@ World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt))
   state_ = rest_state(model_);
 }
 
-engine::ErrorField World::error_field(const Vec3& focus) const {
+engine::ErrorField World::error_field(const ScalpelPose& pose) const {
   engine::ErrorField field;
-  field.focus = focus;
+  field.focus = engine::Segment{pose.base, pose.tip};
   field.radius = def_.lod.near_radius;
   field.near_error = def_.lod.near_error;
   const double span = std::max(1e-9, def_.lod.far_radius - def_.lod.near_radius);
@@ -206,7 +206,7 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
       // A frontier's version names its state (a copy shares it while
       // identical): a still blade and no cut leave the copy as it is.
       if (lod_target_.version() != frontier_.version()) lod_target_ = frontier_;
-      const auto stats = refiner_.update(mt_, error_field(pose.tip), lod_target_);
+      const auto stats = refiner_.update(mt_, error_field(pose), lod_target_);
       m.lod_changes = stats.refined + stats.coarsened;
       take_cut();
       if (lod_target_.version() != frontier_.version()) {

@@ -20,7 +20,7 @@
 //                def.lod.build_frames ago, with its springs (built
 //                meanwhile, sim/model_build.h), and carry the state over;
 //                then, with no move pending, decide the next one toward the
-//                error field around the blade tip (incrementally) and start
+//                error field around the blade (incrementally) and start
 //                building its springs. A move takes effect build_frames
 //                after the blade asked for it, and those frames' physics
 //                overlaps its build. A cut takes any pending move first, so
@@ -110,7 +110,8 @@ class World {
   engine::ValidationReport validate() const;
 
  private:
-  engine::ErrorField error_field(const Vec3& focus) const;
+  // The LOD field around the scalpel's blade (base to tip).
+  engine::ErrorField error_field(const ScalpelPose& pose) const;
   // Makes `model` (built on frontier_) the simulated one, the state carried from `snapshot`;
   // counts it in m.springs_built.
   void adopt_model(SpringModel model, struct DeformationSnapshot snapshot, const struct OriginIndex* origins,

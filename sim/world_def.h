@@ -11,7 +11,7 @@
 namespace mtcut::sim {
 
 // The level of detail around the scalpel: tets may have error up to
-// near_error within near_radius of the blade tip, growing linearly to
+// near_error within near_radius of the blade (base to tip), growing linearly to
 // far_error at far_radius and beyond (metres of error, as the MT's).
 struct LodDef {
   bool enabled = true;

@@ -7,11 +7,21 @@
 namespace mtcut::engine {
 namespace {
 
+// The margin on a box's distances to the focus for a proof about the boxes
+// inside it: the segment distances are within a few ulps of the exact ones
+// (of the coordinates' size), not monotone under box inclusion bit for bit.
+double proof_margin(const Aabb& box, const Segment& focus) {
+  const double size = std::max({box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff(),
+                                focus.a.cwiseAbs().maxCoeff(), focus.b.cwiseAbs().maxCoeff()});
+  return 1e-9 * (1.0 + size);
+}
+
 // +1: every fragment under a box with errors in [lo, hi] meets the field;
 // -1: every one fails; 0: cannot tell. See the header for why this is sound.
-int box_status(const Aabb& box, float lo, float hi, const ErrorField& field, const Vec3& focus) {
-  if (static_cast<double>(hi) <= field.threshold(box.min_distance(focus))) return 1;
-  if (static_cast<double>(lo) > field.threshold(box.max_distance(focus))) return -1;
+int box_status(const Aabb& box, float lo, float hi, const ErrorField& field, const Segment& focus) {
+  const double margin = proof_margin(box, focus);
+  if (static_cast<double>(hi) <= field.threshold(min_distance(box, focus) - margin)) return 1;
+  if (static_cast<double>(lo) > field.threshold(max_distance(box, focus) + margin)) return -1;
   return 0;
 }
 
@@ -34,7 +44,7 @@ std::vector<char> target_membership(const Mt& mt, const std::vector<FragId>& ord
 }  // namespace
 
 bool tet_meets(const Mt& mt, TetId t, const ErrorField& field) {
-  return static_cast<double>(mt.error(t)) <= field.threshold(tet_box(mt, t).min_distance(field.focus));
+  return static_cast<double>(mt.error(t)) <= field.threshold(min_distance(tet_box(mt, t), field.focus));
 }
 
 bool fragment_meets(const Mt& mt, FragId f, const ErrorField& field) {
@@ -200,7 +210,7 @@ void SelectiveRefiner::incremental_update(const Mt& mt, const ErrorField& field,
 }
 
 void SelectiveRefiner::follow_focus(const Mt& mt, const ErrorField& field, Stats& stats) {
-  const Vec3 from = last_field_.focus, to = field.focus;
+  const Segment from = last_field_.focus, to = field.focus;
   changed_bad_.clear(), changed_good_.clear();
   const auto nodes = bvh_.nodes();
   const auto unchanged = [&](const Aabb& box, float lo, float hi) {
@@ -221,8 +231,8 @@ void SelectiveRefiner::follow_focus(const Mt& mt, const ErrorField& field, Stats
           if (unchanged(summary.box, summary.error, summary.error)) continue;
           // The largest-error tet decides "fails" exactly (tet_meets' own test).
           const double e = summary.error;
-          const bool fails_before = e > field.threshold(summary.worst_box.min_distance(from));
-          const bool fails_after = e > field.threshold(summary.worst_box.min_distance(to));
+          const bool fails_before = e > field.threshold(min_distance(summary.worst_box, from));
+          const bool fails_after = e > field.threshold(min_distance(summary.worst_box, to));
           if (fails_before && fails_after) continue;
           const FragId f = indexed_[item];
           ++stats.fragments_tested;

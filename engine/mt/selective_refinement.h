@@ -1,12 +1,14 @@
 #pragma once
 // Selective refinement: the frontier that a position-dependent error
-// threshold asks for, reached incrementally as the focus (the scalpel) moves.
+// threshold asks for, reached incrementally as the focus (the scalpel's
+// blade, a segment) moves.
 //
 // The threshold. At distance d from the focus, tets may have error up to
 //     threshold(d) = near_error + growth * max(0, d - radius)
 // (uniform when growth = 0). A tet meets the field when e(t) <= threshold(d),
-// d measured from the focus to the tet's bounding box (its nearest part). A
-// fragment meets it when every tet it creates does.
+// d measured from the focus to the tet's bounding box (their nearest
+// points, segment_distance.h). A fragment meets it when every tet it
+// creates does.
 //
 // The target. S* = the fragments f such that f and all its ancestors meet
 // the field: the largest parent-closed set of fragments that all meet it,
@@ -21,7 +23,9 @@
 // fragment error below it, proves for whole subtrees that every fragment
 // meets (largest error <= threshold at the nearest distance) or fails
 // (least error > threshold at the farthest distance) at both foci, and
-// skips them. A fragment itself also keeps the box of its largest-error tet:
+// skips them. The proofs take the distances with a margin far above their
+// rounding, so that a box inside the node is never nearer (farther) than
+// the node's bound once both are rounded. A fragment itself also keeps the box of its largest-error tet:
 // that tet fails exactly when the focus is within its own reach, which
 // settles most fragments near the focus without looking at their tets.
 // Then S moves from S*(c0) to S*(c1): fragments that now fail
@@ -34,11 +38,12 @@
 #include "engine/mt/bvh.h"
 #include "engine/mt/frontier.h"
 #include "engine/mt/mt.h"
+#include "engine/mt/segment_distance.h"
 
 namespace mtcut::engine {
 
 struct ErrorField {
-  Vec3 focus = Vec3::Zero();
+  Segment focus;            // the scalpel's blade (a point when its ends are equal)
   double radius = 0.0;      // within it, near_error applies
   double near_error = 0.0;  // error allowed at the focus (metres)
   double growth = 0.0;      // error allowed per metre beyond the radius (>= 0)
@@ -50,7 +55,7 @@ struct ErrorField {
   }
   // The scalpel's field: the fine mesh within `radius` of `focus`, then
   // tets of error (enclosing radius) up to growth x the distance beyond it.
-  static ErrorField around(const Vec3& focus, double radius, double growth = 0.25) {
+  static ErrorField around(const Segment& focus, double radius, double growth = 0.25) {
     ErrorField field;
     field.focus = focus;
     field.radius = radius;

@@ -268,7 +268,7 @@ std::vector<std::int32_t> sorted_tets(const engine::Frontier& frontier) {
 // A frontier move the blade asks for at one frame is simulated from
 // def.lod.build_frames later: the frames in between still simulate the
 // frontier it started with and decide no other move, and the frame that
-// takes it simulates S* of the error field around the blade's tip.
+// takes it simulates S* of the error field around the blade (base to tip).
 class WorldMoveLatency : public ::testing::TestWithParam<int> {};
 
 TEST_P(WorldMoveLatency, AFrontierMoveTakesEffectBuildFramesAfterTheBladeAskedForIt) {
@@ -293,7 +293,7 @@ TEST_P(WorldMoveLatency, AFrontierMoveTakesEffectBuildFramesAfterTheBladeAskedFo
   EXPECT_EQ(taken.lod_changes, 0u);  // the blade stays: nothing more to move
 
   engine::ErrorField field;
-  field.focus = pose.tip;
+  field.focus = engine::Segment{pose.base, pose.tip};
   field.radius = def.lod.near_radius;
   field.near_error = def.lod.near_error;
   field.growth = (def.lod.far_error - def.lod.near_error) / (def.lod.far_radius - def.lod.near_radius);

@@ -84,7 +84,7 @@ inline Frontier random_frontier(const Mt& mt, std::mt19937_64& rng) {
   float max_error = 0;
   for (std::size_t f = 0; f < mt.num_fragments(); ++f) max_error = std::max(max_error, mt.fragment_error(FragId(f)));
   engine::ErrorField field;
-  field.focus = box.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(box.hi - box.lo);
+  field.focus = engine::Segment::point(box.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(box.hi - box.lo));
   field.radius = u(rng) * 0.3 * (box.hi - box.lo).norm();
   field.near_error = u(rng) < 0.3 ? 0.0 : u(rng) * max_error;
   field.growth = u(rng) * 2.0 * max_error / (box.hi - box.lo).norm();

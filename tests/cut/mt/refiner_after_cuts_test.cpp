@@ -29,7 +29,7 @@ TEST_P(RefinerAfterCuts, ReachesTheFrontierExtractedFromScratch) {
   Frontier frontier = Frontier::coarsest(mt);
   std::size_t cuts = 0, partial_passes = 0;
   for (int step = 0; step < 24; ++step) {
-    field.focus = box.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(box.hi - box.lo);
+    field.focus = engine::Segment::point(box.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(box.hi - box.lo));
     const engine::SelectiveRefiner::Stats stats = refiner.update(mt, field, frontier);
     partial_passes += !stats.incremental && stats.fragments_tested < mt.num_fragments();
     ASSERT_EQ(frontier_difference(frontier, engine::extract_frontier(mt, field)), "") << "step " << step;

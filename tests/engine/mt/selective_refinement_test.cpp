@@ -22,7 +22,7 @@ Aabb mt_box(const Mt& mt) {
 }
 
 // A field fine near the focus, growing outwards, scaled to the MT's errors.
-ErrorField field_for(const Mt& mt, const Vec3& focus) {
+ErrorField field_for(const Mt& mt, const Segment& focus) {
   float fine = 0.0f;
   for (TetId t : mt.created(mt.root())) fine = std::max(fine, mt.error(t));
   const Aabb box = mt_box(mt);
@@ -86,7 +86,7 @@ TEST_P(SelectiveRefinementOnMeshes, IncrementalUpdatesMatchExtractionFromScratch
     } else {
       focus += 0.03 * (box.hi - box.lo).norm() * Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5);
     }
-    const ErrorField field = field_for(mt(), focus);
+    const ErrorField field = field_for(mt(), Segment::point(focus));
     const SelectiveRefiner::Stats stats = refiner.update(mt(), field, frontier);
     incremental += stats.incremental;
     ASSERT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt(), field))) << "step " << step;
@@ -96,13 +96,45 @@ TEST_P(SelectiveRefinementOnMeshes, IncrementalUpdatesMatchExtractionFromScratch
   EXPECT_EQ(incremental, 29u);  // all but the first
 }
 
+// The same with a blade: a segment whose ends move apart (it turns and
+// reaches into the model and out), now and then jumping.
+TEST_P(SelectiveRefinementOnMeshes, IncrementalUpdatesFollowABladeAsExtractionFromScratch) {
+  const Aabb box = mt_box(mt());
+  const double size = (box.hi - box.lo).norm();
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto random_point = [&] {
+    return Vec3(box.lo + (box.hi - box.lo).cwiseProduct(Vec3(unit(rng), unit(rng), unit(rng))));
+  };
+  const auto nudge = [&]() -> Vec3 { return 0.03 * size * Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5); };
+  SelectiveRefiner refiner;
+  Frontier frontier = Frontier::finest(mt());
+  Segment blade{random_point(), random_point()};
+  std::size_t incremental = 0;
+  for (int step = 0; step < 30; ++step) {
+    if (step % 10 == 9) {
+      blade = {random_point(), random_point()};
+    } else {
+      blade.a += nudge();
+      blade.b += nudge();
+    }
+    const ErrorField field = field_for(mt(), blade);
+    const SelectiveRefiner::Stats stats = refiner.update(mt(), field, frontier);
+    incremental += stats.incremental;
+    ASSERT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt(), field))) << "step " << step;
+    const ValidationReport report = validate_frontier(mt(), frontier);
+    ASSERT_TRUE(report.ok()) << "step " << step << ": " << report.summary();
+  }
+  EXPECT_EQ(incremental, 29u);
+}
+
 TEST_P(SelectiveRefinementOnMeshes, NearTheFocusTheFrontierIsAsFineAsAsked) {
   const Aabb box = mt_box(mt());
-  ErrorField field = field_for(mt(), box.center());
+  ErrorField field = field_for(mt(), Segment::point(box.center()));
   const Frontier frontier = extract_frontier(mt(), field);
   for (TetId t : frontier.tets()) {
     if (mt().birth(t) == mt().root()) continue;
-    const double d = tet_box(mt(), t).min_distance(field.focus);
+    const double d = min_distance(tet_box(mt(), t), field.focus);
     EXPECT_LE(mt().error(t), field.threshold(d));
   }
   // And it is coarser than the fine mesh elsewhere.
@@ -119,16 +151,42 @@ INSTANTIATE_TEST_SUITE_P(Meshes, SelectiveRefinementOnMeshes,
 TEST(SelectiveRefinement, AroundTheScalpelTheMeshIsFine) {
   const Mt& mt = test_mt("box");
   const Aabb box = mt_box(mt);
-  const ErrorField field = ErrorField::around(box.center(), 0.2 * (box.hi - box.lo).minCoeff());
+  const ErrorField field = ErrorField::around(Segment::point(box.center()), 0.2 * (box.hi - box.lo).minCoeff());
   const Frontier frontier = extract_frontier(mt, field);
   ASSERT_TRUE(validate_frontier(mt, frontier).ok());
   std::size_t near = 0;
   for (TetId t : frontier.tets())
-    if (tet_box(mt, t).min_distance(field.focus) <= field.radius) {
+    if (min_distance(tet_box(mt, t), field.focus) <= field.radius) {
       ++near;
       EXPECT_EQ(mt.birth(t), mt.root());
     }
   EXPECT_GT(near, 0u);
+  EXPECT_LT(frontier.tets().size(), mt.created(mt.root()).size());
+}
+
+// A blade through the model, its tip beyond it (a scalpel drawn down to the
+// table): the mesh is fine along the whole blade inside the model, not only
+// near the tip, which is in no tet's reach.
+TEST(SelectiveRefinement, AlongTheWholeBladeTheMeshIsFine) {
+  const Mt& mt = test_mt("box");
+  const Aabb box = mt_box(mt);
+  const Vec3 size = box.hi - box.lo;
+  const double radius = 0.1 * size.minCoeff();
+  const Vec3 top(box.center().x(), box.center().y(), box.hi.z() + 0.5 * size.z());
+  const Segment blade{top, Vec3(top.x(), top.y(), box.lo.z() - 0.5 * size.z())};
+  const ErrorField field = ErrorField::around(blade, radius);
+  const Frontier frontier = extract_frontier(mt, field);
+  ASSERT_TRUE(validate_frontier(mt, frontier).ok());
+  std::size_t near_blade = 0;
+  for (TetId t : frontier.tets()) {
+    const Aabb tet = tet_box(mt, t);
+    ASSERT_GT(tet.min_distance(blade.b), radius);  // the tip is out of reach
+    if (min_distance(tet, blade) <= radius) {
+      ++near_blade;
+      EXPECT_EQ(mt.birth(t), mt.root());
+    }
+  }
+  EXPECT_GT(near_blade, 0u);
   EXPECT_LT(frontier.tets().size(), mt.created(mt.root()).size());
 }
 
@@ -139,18 +197,18 @@ TEST(SelectiveRefinement, SmallFocusMovesTouchOnlyNearbyFragments) {
   SelectiveRefiner refiner;
   Frontier frontier = Frontier::finest(mt);
   Vec3 focus = box.center() - 0.2 * (box.hi - box.lo);
-  refiner.update(mt, field_for(mt, focus), frontier);
+  refiner.update(mt, field_for(mt, Segment::point(focus)), frontier);
   std::size_t tested = 0, steps = 0;
   for (; steps < 20; ++steps) {
     focus += Vec3(0.004 * size, 0.002 * size, 0.0);
-    const SelectiveRefiner::Stats stats = refiner.update(mt, field_for(mt, focus), frontier);
+    const SelectiveRefiner::Stats stats = refiner.update(mt, field_for(mt, Segment::point(focus)), frontier);
     EXPECT_TRUE(stats.incremental);
     tested += stats.fragments_tested;
   }
   // On average a step looks at a small share of the fragments.
   EXPECT_LT(static_cast<double>(tested) / static_cast<double>(steps), 0.1 * static_cast<double>(mt.num_fragments()))
       << tested / steps << " of " << mt.num_fragments();
-  EXPECT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt, field_for(mt, focus))));
+  EXPECT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt, field_for(mt, Segment::point(focus)))));
 }
 
 TEST(SelectiveRefinement, AFrontierEditedElsewhereGetsAFullPass) {
@@ -158,7 +216,7 @@ TEST(SelectiveRefinement, AFrontierEditedElsewhereGetsAFullPass) {
   const Aabb box = mt_box(mt);
   SelectiveRefiner refiner;
   Frontier frontier = Frontier::finest(mt);
-  const ErrorField field = field_for(mt, box.lo);
+  const ErrorField field = field_for(mt, Segment::point(box.lo));
   EXPECT_FALSE(refiner.update(mt, field, frontier).incremental);
   EXPECT_TRUE(refiner.update(mt, field, frontier).incremental);
   // Someone refines by hand: the refiner must notice.

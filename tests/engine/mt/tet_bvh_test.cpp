@@ -66,7 +66,7 @@ TEST(TetBvh, LocatesInAFrontier) {
   Aabb box;
   for (const Vec3& p : mt.positions()) box.extend(p);
   ErrorField field;
-  field.focus = box.lo;
+  field.focus = Segment::point(box.lo);
   field.near_error = 0.0;
   field.growth = 0.3;
   const Frontier frontier = extract_frontier(mt, field);
