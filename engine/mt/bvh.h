@@ -32,8 +32,7 @@ struct Aabb {
   double volume() const { return empty() ? 0.0 : (hi - lo).prod(); }
   // Distance from p to the nearest / farthest point of the box. Both are
   // monotone under box inclusion in floating point too (a box inside
-  // another is never nearer than it, nor farther than its far corner):
-  // selective refinement's pruning relies on that.
+  // another is never nearer than it, nor farther than its far corner).
   double min_distance(const Vec3& p) const;
   double max_distance(const Vec3& p) const;
 };

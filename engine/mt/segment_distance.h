@@ -12,15 +12,15 @@ struct Segment {
   Vec3 a = Vec3::Zero(), b = Vec3::Zero();
 
   static Segment point(const Vec3& p) { return {p, p}; }
-  bool operator==(const Segment&) const = default;
 };
 
 // Distance from the segment to the nearest point of the box: the box's
 // distance to the segment point nearest it (found between the parameters
 // where the segment crosses the box's slab planes, where the squared
 // distance is one quadratic of the parameter). For a point (a == b), the
-// same bits as box.min_distance(a). The distance to a point of the segment,
-// so within rounding of the exact distance and, but for rounding, never below it.
+// same bits as box.min_distance(a). It is the distance to a point of the
+// segment: within rounding of the exact distance, and not below it but for
+// rounding.
 double min_distance(const Aabb& box, const Segment& s);
 // Distance from the segment to the farthest point of the box (at a
 // corner: the distance to a segment is convex). No box inside `box` is

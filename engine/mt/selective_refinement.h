@@ -25,9 +25,10 @@
 // (least error > threshold at the farthest distance) at both foci, and
 // skips them. The proofs take the distances with a margin far above their
 // rounding, so that a box inside the node is never nearer (farther) than
-// the node's bound once both are rounded. A fragment itself also keeps the box of its largest-error tet:
-// that tet fails exactly when the focus is within its own reach, which
-// settles most fragments near the focus without looking at their tets.
+// the node's bound once both are rounded. A fragment itself also keeps the
+// box of its largest-error tet: that tet fails exactly when the focus is
+// within its own reach, which settles most fragments near the focus
+// without looking at their tets.
 // Then S moves from S*(c0) to S*(c1): fragments that now fail
 // are refined away with their descendants, fragments that now meet are
 // added when their parents are in, and their children after them.
