@@ -5,17 +5,12 @@
 #include <random>
 #include <set>
 
+#include "tests/engine/mt/random_box.h"
+
 namespace mtcut::engine {
 namespace {
 
-Aabb random_box(std::mt19937& rng, double size) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0), s(0.0, size);
-  const Vec3 lo(u(rng), u(rng), u(rng));
-  Aabb box;
-  box.extend(lo);
-  box.extend(Vec3(lo + Vec3(s(rng), s(rng), s(rng))));
-  return box;
-}
+using test::random_box;
 
 TEST(Bvh, DistancesBoundEveryPointOfTheBox) {
   std::mt19937 rng(1);

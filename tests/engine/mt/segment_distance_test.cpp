@@ -4,17 +4,12 @@
 
 #include <random>
 
+#include "tests/engine/mt/random_box.h"
+
 namespace mtcut::engine {
 namespace {
 
-Aabb random_box(std::mt19937& rng, double size) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0), s(0.0, size);
-  const Vec3 lo(u(rng), u(rng), u(rng));
-  Aabb box;
-  box.extend(lo);
-  box.extend(Vec3(lo + Vec3(s(rng), s(rng), s(rng))));
-  return box;
-}
+using test::random_box;
 
 Segment random_segment(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-2.0, 2.0);
