@@ -42,6 +42,41 @@ struct SelectiveCase {
 class SelectiveRefinementOnMeshes : public ::testing::TestWithParam<SelectiveCase> {
  protected:
   const Mt& mt() const { return test_mt(GetParam().mesh, GetParam().preserve); }
+
+  // 30 incremental updates along a scalpel path (small steps, now and then a
+  // jump) of a point focus, or of a blade whose two ends move apart (it
+  // turns and reaches into the model and out). After every update the
+  // frontier is the one extracted from scratch, and valid.
+  void follow_scalpel_path(bool blade, unsigned seed) const {
+    const Aabb box = mt_box(mt());
+    const double size = (box.hi - box.lo).norm();
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto random_point = [&]() -> Vec3 {
+      return box.lo + (box.hi - box.lo).cwiseProduct(Vec3(unit(rng), unit(rng), unit(rng)));
+    };
+    const auto nudge = [&]() -> Vec3 { return 0.03 * size * Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5); };
+    const auto jump = [&] { return blade ? Segment{random_point(), random_point()} : Segment::point(random_point()); };
+    SelectiveRefiner refiner;
+    Frontier frontier = Frontier::finest(mt());
+    Segment focus = jump();
+    std::size_t incremental = 0;
+    for (int step = 0; step < 30; ++step) {
+      if (step % 10 == 9) {
+        focus = jump();
+      } else {
+        focus.a += nudge();
+        focus.b = blade ? Vec3(focus.b + nudge()) : focus.a;
+      }
+      const ErrorField field = field_for(mt(), focus);
+      const SelectiveRefiner::Stats stats = refiner.update(mt(), field, frontier);
+      incremental += stats.incremental;
+      ASSERT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt(), field))) << "step " << step;
+      const ValidationReport report = validate_frontier(mt(), frontier);
+      ASSERT_TRUE(report.ok()) << "step " << step << ": " << report.summary();
+    }
+    EXPECT_EQ(incremental, 29u);  // all but the first
+  }
 };
 
 TEST_P(SelectiveRefinementOnMeshes, UniformErrorZeroIsFineAndInfinityCoarsest) {
@@ -69,63 +104,11 @@ TEST_P(SelectiveRefinementOnMeshes, UniformLevelsCoarsenAsTheErrorGrows) {
 }
 
 TEST_P(SelectiveRefinementOnMeshes, IncrementalUpdatesMatchExtractionFromScratch) {
-  const Aabb box = mt_box(mt());
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const auto random_point = [&] {
-    return Vec3(box.lo + (box.hi - box.lo).cwiseProduct(Vec3(unit(rng), unit(rng), unit(rng))));
-  };
-  SelectiveRefiner refiner;
-  Frontier frontier = Frontier::finest(mt());
-  Vec3 focus = random_point();
-  std::size_t incremental = 0;
-  for (int step = 0; step < 30; ++step) {
-    // A scalpel path: small steps, now and then a jump.
-    if (step % 10 == 9) {
-      focus = random_point();
-    } else {
-      focus += 0.03 * (box.hi - box.lo).norm() * Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5);
-    }
-    const ErrorField field = field_for(mt(), Segment::point(focus));
-    const SelectiveRefiner::Stats stats = refiner.update(mt(), field, frontier);
-    incremental += stats.incremental;
-    ASSERT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt(), field))) << "step " << step;
-    const ValidationReport report = validate_frontier(mt(), frontier);
-    ASSERT_TRUE(report.ok()) << "step " << step << ": " << report.summary();
-  }
-  EXPECT_EQ(incremental, 29u);  // all but the first
+  follow_scalpel_path(/*blade=*/false, 5);
 }
 
-// The same with a blade: a segment whose ends move apart (it turns and
-// reaches into the model and out), now and then jumping.
 TEST_P(SelectiveRefinementOnMeshes, IncrementalUpdatesFollowABladeAsExtractionFromScratch) {
-  const Aabb box = mt_box(mt());
-  const double size = (box.hi - box.lo).norm();
-  std::mt19937 rng(8);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const auto random_point = [&] {
-    return Vec3(box.lo + (box.hi - box.lo).cwiseProduct(Vec3(unit(rng), unit(rng), unit(rng))));
-  };
-  const auto nudge = [&]() -> Vec3 { return 0.03 * size * Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5); };
-  SelectiveRefiner refiner;
-  Frontier frontier = Frontier::finest(mt());
-  Segment blade{random_point(), random_point()};
-  std::size_t incremental = 0;
-  for (int step = 0; step < 30; ++step) {
-    if (step % 10 == 9) {
-      blade = {random_point(), random_point()};
-    } else {
-      blade.a += nudge();
-      blade.b += nudge();
-    }
-    const ErrorField field = field_for(mt(), blade);
-    const SelectiveRefiner::Stats stats = refiner.update(mt(), field, frontier);
-    incremental += stats.incremental;
-    ASSERT_EQ(sorted_tets(frontier), sorted_tets(extract_frontier(mt(), field))) << "step " << step;
-    const ValidationReport report = validate_frontier(mt(), frontier);
-    ASSERT_TRUE(report.ok()) << "step " << step << ": " << report.summary();
-  }
-  EXPECT_EQ(incremental, 29u);
+  follow_scalpel_path(/*blade=*/true, 8);
 }
 
 TEST_P(SelectiveRefinementOnMeshes, NearTheFocusTheFrontierIsAsFineAsAsked) {
