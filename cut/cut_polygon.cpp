@@ -192,6 +192,47 @@ double CutPolygon::exit_parameter(const Vec3& p, const Vec3& q) const {
   return std::clamp(s_max, 0.0, 1.0);
 }
 
+double CutPolygon::last_inside_parameter(const Vec3& p, const Vec3& q, int* edge) const {
+  // The segment clipped by each edge's inner half-plane (Cyrus-Beck).
+  const Eigen::Vector2d a = project(p);
+  const Eigen::Vector2d dir = project(q) - a;
+  const std::size_t n = corners2d_.size();
+  double s_min = 0.0, s_max = 1.0;
+  int leaves = -1;
+  if (edge) *edge = -1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d& c = corners2d_[i];
+    const Eigen::Vector2d e = corners2d_[(i + 1) % n] - c;
+    const Eigen::Vector2d inward(-e.y(), e.x());
+    const double f0 = inward.dot(a - c), slope = inward.dot(dir);
+    if (slope > 0) {
+      s_min = std::max(s_min, -f0 / slope);
+    } else if (slope < 0) {
+      if (f0 / -slope < s_max) {
+        s_max = f0 / -slope;
+        leaves = static_cast<int>(i);
+      }
+    } else if (f0 < 0) {
+      return 0.0;
+    }
+  }
+  if (s_min > s_max) return 0.0;
+  if (edge) *edge = leaves;
+  return std::clamp(s_max, 0.0, 1.0);
+}
+
+int CutPolygon::edge_between(const Vec3& a, const Vec3& b) const {
+  const double tolerance = 1e-9 * diameter_;
+  const std::size_t n = corners_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 &c = corners_[i], &d = corners_[(i + 1) % n];
+    if (((c - a).norm() <= tolerance && (d - b).norm() <= tolerance) ||
+        ((c - b).norm() <= tolerance && (d - a).norm() <= tolerance))
+      return static_cast<int>(i);
+  }
+  return -1;
+}
+
 std::vector<CutPolygon> sweep_blade(const Vec3& a0, const Vec3& b0, const Vec3& a1, const Vec3& b1,
                                     const CutPolygonDef& def) {
   auto attempt = [&](const std::vector<Vec3>& pts) -> std::optional<CutPolygon> {

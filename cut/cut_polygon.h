@@ -71,6 +71,14 @@ class CutPolygon {
   // Approximate: the largest s in [0, 1] with p + s (q - p) (projected) inside
   // the polygon, or 0 when p projects outside.
   double exit_parameter(const Vec3& p, const Vec3& q) const;
+  // Approximate: the largest s in [0, 1] with p + s (q - p) (projected)
+  // inside the polygon, wherever p projects, or 0 when the segment misses
+  // it. `edge` (if given) receives the outline edge it leaves through (i:
+  // corners i to i + 1), -1 when it does not leave.
+  double last_inside_parameter(const Vec3& p, const Vec3& q, int* edge = nullptr) const;
+  // The outline edge from corner i to i + 1 whose ends are a and b (either
+  // order, within 1e-9 of the diameter), or -1.
+  int edge_between(const Vec3& a, const Vec3& b) const;
 
  private:
   Eigen::Vector2d project(const Vec3& x) const;

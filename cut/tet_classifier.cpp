@@ -89,9 +89,10 @@ CutCase TetConfig::cut_case() const {
 // ---- CutClassifier -----------------------------------------------------------
 
 CutClassifier::CutClassifier(const CutPolygon& polygon, std::span<const Vec3> positions, const ClassifierDef& def,
-                             Scratch* scratch)
+                             Scratch* scratch, const CutContinuation* continuation)
     : polygon_(polygon),
       positions_(positions),
+      continuation_(continuation),
       snap_(ClassifierDef::effective_snap(def.snap)),
       face_clamp_(ClassifierDef::face_clamp(def.snap)),
       own_scratch_(scratch ? nullptr : std::make_unique<Scratch>()),
@@ -99,6 +100,20 @@ CutClassifier::CutClassifier(const CutPolygon& polygon, std::span<const Vec3> po
   if (scratch_->in_use) throw std::logic_error("CutClassifier: the scratch is in use by another classifier");
   scratch_->in_use = true;
   if (scratch_->info.size() < positions.size()) scratch_->info.resize(positions.size());
+  if (continuation_) {
+    // The stroke's front that lies on the polygon (to kMinSnap of its face,
+    // as the leading edge put it) is split: the crack goes on from it.
+    for (const CrackFrontPoint& f : continuation_->front) {
+      double longest = 0;
+      for (int i = 0; i < 3; ++i)
+        longest = std::max(longest, (positions_[f.face[i].index()] - positions_[f.face[(i + 1) % 3].index()]).norm());
+      const Vec3& p = positions_[f.id.index()];
+      const double reach = (ClassifierDef::kMinSnap + 1e-9) * longest;
+      if (polygon_.distance_outside(p) > reach || std::abs(polygon_.signed_distance(p)) > reach) continue;
+      edit(f.id).pulled = true;
+      put_on(f.id);
+    }
+  }
 }
 
 engine::ValidationReport CutClassifier::Scratch::validate() const {
@@ -124,8 +139,23 @@ std::uint64_t CutClassifier::edge_key(VertId a, VertId b) {
 
 std::int8_t CutClassifier::compute_side(VertId v) const {
   VertexInfo& info = edit(v);
-  info.raw = static_cast<std::int8_t>(polygon_.side(positions_[v.index()]));
-  info.distance = polygon_.signed_distance(positions_[v.index()]);
+  const Vec3& p = positions_[v.index()];
+  if (continuation_ && !continuation_->junctions.empty() && continuation_->last().ahead(p) < 0) {  // behind
+    const CutPolygon& previous = continuation_->polygon_behind(p);
+    info.distance = previous.signed_distance(p);
+    const CrackSides* sides = continuation_->sides;
+    const auto it = sides ? sides->find(v.value) : CrackSides::const_iterator{};
+    if (sides && it != sides->end()) {
+      info.raw = it->second;
+      info.crack_sided = true;
+      info.vetoed = true;  // never snapped onto the cut: it lies in the crack, on its side
+    } else {
+      info.raw = static_cast<std::int8_t>(previous.side(p));
+    }
+    return info.raw;
+  }
+  info.raw = static_cast<std::int8_t>(polygon_.side(p));
+  info.distance = polygon_.signed_distance(p);
   return info.raw;
 }
 
@@ -147,8 +177,19 @@ void CutClassifier::pull_in(VertId v) {
 
 double CutClassifier::raw_parameter(VertId a, VertId b) const {
   const VertId lo = a < b ? a : b, hi = a < b ? b : a;
-  const double d_lo = distance(lo);
-  const double d_hi = distance(hi);
+  double d_lo = distance(lo);
+  double d_hi = distance(hi);
+  if (continuation_) {
+    // An edge crossing the polygon's plane is cut where it crosses it, as
+    // in every other resolution; only an edge that straddles the sheet
+    // behind the junction alone (never covered) is placed by the sheet.
+    const double p_lo = polygon_.signed_distance(positions_[lo.index()]);
+    const double p_hi = polygon_.signed_distance(positions_[hi.index()]);
+    if ((p_lo < 0 && p_hi > 0) || (p_lo > 0 && p_hi < 0)) {
+      d_lo = p_lo;
+      d_hi = p_hi;
+    }
+  }
   const double t = d_lo - d_hi != 0 ? d_lo / (d_lo - d_hi) : 0.5;
   return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.5;
 }
@@ -224,6 +265,7 @@ void CutClassifier::keep_off(VertId v) {
   VertexInfo& info = edit(v);
   info.vetoed = true;
   const double d = distance(v);
+  if (info.crack_sided) return;  // its crack's side
   // On the plane to rounding: the side its neighbours are on.
   if (raw_side(v) == 0 || std::abs(d) <= 1e-9 * reach(v)) {
     info.kept_side = info.lean < 0 ? -1 : 1;
@@ -295,8 +337,12 @@ bool CutClassifier::covered(EdgeInfo& e, VertId a, VertId b) const {
   if (e.covered < 0) {
     const VertId lo = a < b ? a : b, hi = a < b ? b : a;
     // Closed: a crossing on the outline is cut, so strokes sharing an edge
-    // leave nothing between them.
-    e.covered = polygon_.line_crossing(positions_[lo.index()], positions_[hi.index()]) >= 0 ? 1 : 0;
+    // leave nothing between them. Behind a stroke's junction an edge may
+    // straddle the sheet and not the plane: the line through it may then
+    // meet the polygon, the edge not.
+    const Vec3 &p_lo = positions_[lo.index()], &p_hi = positions_[hi.index()];
+    const bool crosses_plane = !continuation_ || polygon_.side(p_lo) * polygon_.side(p_hi) < 0;
+    e.covered = crosses_plane && polygon_.line_crossing(p_lo, p_hi) >= 0 ? 1 : 0;
   }
   return e.covered == 1;
 }
@@ -377,7 +423,16 @@ CutClassifier::FacePoint CutClassifier::face_point(const std::array<VertId, 3>& 
   SectionEnd p, q;
   if (!section_ends(face, p, q)) throw std::logic_error("face_point: the face is not crossed by the cut");
   if (!p.active) std::swap(p, q);
-  const double s = std::clamp(polygon_.exit_parameter(p.position, q.position), face_clamp_, 1 - face_clamp_);
+  // Continuing a stroke, p may be the last cut's crack front behind the
+  // junction: the crack goes on from it through the polygon.
+  int edge = -1;
+  const double exit = continuation_ ? polygon_.last_inside_parameter(p.position, q.position, &edge)
+                                    : polygon_.exit_parameter(p.position, q.position);
+  // On a stroke's leading edge, exactly where the outline leaves the face
+  // (stroke_junction.h): the next step starts there.
+  const double clamp = continuation_ && edge >= 0 && edge == continuation_->leading_edge ? ClassifierDef::kMinSnap
+                                                                                          : face_clamp_;
+  const double s = std::clamp(exit, clamp, 1 - clamp);
   FacePoint out;
   out.position = p.position + s * (q.position - p.position);
   for (int i = 0; i < 3; ++i) out.weights[i] = (1 - s) * p.weights[i] + s * q.weights[i];

@@ -41,6 +41,7 @@
 
 #include "absl/container/flat_hash_map.h"
 #include "cut/cut_polygon.h"
+#include "cut/stroke_junction.h"
 #include "engine/tet_mesh.h"
 #include "engine/validation.h"
 
@@ -100,6 +101,7 @@ class CutClassifier {
     bool vetoed = false;       // kept off the cut
     bool requested_off = false;  // by veto()
     bool pulled = false;       // on the cut by request
+    bool crack_sided = false;  // behind a stroke's junction, made by the stroke: sided by its crack
     std::int8_t kept_side = 0; // side of a vertex kept off the cut (0: its raw side)
     double lean = 0;           // sum of its candidate neighbours' distances to the plane
     double reach2 = 0;         // squared length of the longest candidate edge at the vertex
@@ -130,9 +132,13 @@ class CutClassifier {
   // `positions` (n_vertices): the geometry the cut is computed on; it must
   // outlive the classifier and not change while it is used.
   // `scratch`: reused storage (nullptr: the classifier allocates its own,
-  // a pass over the vertices).
+  // a pass over the vertices). `continuation`: the polygon is a step of a
+  // scalpel stroke (cut/stroke_junction.h): behind the junction with the
+  // last step, vertices are sided by the stroke's crack and earlier planes,
+  // the crack's front on the junction is split, and face points on the
+  // polygon's leading edge are not clamped. It must outlive the classifier.
   CutClassifier(const CutPolygon& polygon, std::span<const engine::Vec3> positions, const ClassifierDef& def = {},
-                Scratch* scratch = nullptr);
+                Scratch* scratch = nullptr, const CutContinuation* continuation = nullptr);
   ~CutClassifier();
   CutClassifier(const CutClassifier&) = delete;
   CutClassifier& operator=(const CutClassifier&) = delete;
@@ -257,6 +263,7 @@ class CutClassifier {
 
   const CutPolygon& polygon_;
   std::span<const engine::Vec3> positions_;
+  const CutContinuation* continuation_;
   double snap_;
   double face_clamp_;
   bool finalized_ = false;

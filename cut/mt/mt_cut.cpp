@@ -89,7 +89,7 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
                                 std::to_string(mt.num_vertices()) + " MT vertices");
   // The search's state lives while the cut is searched (the jobs only
   // append what it resolved).
-  CutClassifier classifier(polygon_, geometry, ClassifierDef{def.snap}, &workspace_->classifier);
+  CutClassifier classifier(polygon_, geometry, ClassifierDef{def.snap}, &workspace_->classifier, def.continuation);
   // The query box in rest space: the polygon's box, grown by the snap reach
   // (no edge is longer than the model's box) and by the largest displacement.
   // On rest geometry the BVH's root box is the model's: no pass over the

@@ -65,6 +65,9 @@ using engine::TetBvh;
 struct MtCutDef {
   SplitScheme scheme = SplitScheme::kLut;
   double snap = 0.0;  // classifier snap, fraction of an edge (see "Snapping" above)
+  // The polygon continues the previous cut of a stroke (stroke_junction.h);
+  // read only while the cut is searched (MtCut's constructor).
+  const CutContinuation* continuation = nullptr;
 };
 
 // One cut in progress. Not copyable: it holds its workspace (its own, or one

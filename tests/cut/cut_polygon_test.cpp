@@ -1,5 +1,6 @@
 // CutPolygon's box test against its plane, which prunes the cut's search:
-// a box it rejects must hold no point on the plane or across it.
+// a box it rejects must hold no point on the plane or across it; where a
+// segment last lies inside the polygon; its edges by their ends.
 #include "cut/cut_polygon.h"
 
 #include <gtest/gtest.h>
@@ -63,6 +64,42 @@ TEST(CutPolygon, BoxesAcrossOrOnThePlaneAreKept) {
   EXPECT_FALSE(polygon.box_may_touch_plane(above));
   EXPECT_TRUE(polygon.box_may_touch_plane(above, 0.1));  // its points may move down onto the plane
   EXPECT_FALSE(polygon.box_may_touch_plane(Aabb{}));     // empty
+}
+
+// The unit square in z = 0, counter-clockwise seen from +z: edges 0 (y = 0),
+// 1 (x = 1), 2 (y = 1), 3 (x = 0).
+CutPolygon unit_square() {
+  return CutPolygon::from_points({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)});
+}
+
+TEST(CutPolygon, LastInsideParameterIsWhereTheSegmentLeavesWhereverItStarts) {
+  const CutPolygon square = unit_square();
+  int edge = -2;
+  // From inside: what exit_parameter says, and the edge it leaves through.
+  EXPECT_NEAR(square.last_inside_parameter(Vec3(0.5, 0.5, 0.3), Vec3(1.5, 0.5, -0.2), &edge), 0.5, 1e-12);
+  EXPECT_NEAR(square.exit_parameter(Vec3(0.5, 0.5, 0.3), Vec3(1.5, 0.5, -0.2)), 0.5, 1e-12);
+  EXPECT_EQ(edge, 1);
+  // From outside, through the square: where it leaves, not 0.
+  EXPECT_NEAR(square.last_inside_parameter(Vec3(-1, 0.5, 0), Vec3(2, 0.5, 0), &edge), 2.0 / 3, 1e-12);
+  EXPECT_EQ(square.exit_parameter(Vec3(-1, 0.5, 0), Vec3(2, 0.5, 0)), 0.0);
+  EXPECT_EQ(edge, 1);
+  EXPECT_NEAR(square.last_inside_parameter(Vec3(0.5, -1, 0), Vec3(0.5, 3, 0), &edge), 0.5, 1e-12);
+  EXPECT_EQ(edge, 2);  // from below, out through y = 1
+  // Ending inside: 1, through no edge.
+  EXPECT_EQ(square.last_inside_parameter(Vec3(-1, 0.5, 0), Vec3(0.5, 0.5, 0), &edge), 1.0);
+  EXPECT_EQ(edge, -1);
+  // Missing it: 0.
+  EXPECT_EQ(square.last_inside_parameter(Vec3(-1, 2, 0), Vec3(2, 2.5, 0), &edge), 0.0);
+  EXPECT_EQ(edge, -1);
+}
+
+TEST(CutPolygon, EdgeBetweenFindsAnOutlineEdgeByItsEnds) {
+  const CutPolygon square = unit_square();
+  EXPECT_EQ(square.edge_between(Vec3(1, 0, 0), Vec3(1, 1, 0)), 1);
+  EXPECT_EQ(square.edge_between(Vec3(1, 1, 0), Vec3(1, 0, 0)), 1);  // either order
+  EXPECT_EQ(square.edge_between(Vec3(0, 1, 0), Vec3(0, 0, 0)), 3);
+  EXPECT_EQ(square.edge_between(Vec3(0, 0, 0), Vec3(1, 1, 0)), -1);  // a diagonal
+  EXPECT_EQ(square.edge_between(Vec3(1, 0, 1e-6), Vec3(1, 1, 0)), -1);  // beyond 1e-9 of the diameter
 }
 
 }  // namespace

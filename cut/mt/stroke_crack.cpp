@@ -1,0 +1,52 @@
+#include "cut/mt/stroke_crack.h"
+
+namespace mtcut::cut {
+
+CutContinuation StrokeCrack::continuation(const CutPolygon& next, const Vec3& blade_base, const Vec3& blade_tip) {
+  const int leading = next.edge_between(blade_base, blade_tip);
+  if (tentative_) junctions_.pop_back();
+  tentative_ = false;
+  std::optional<StrokeJunction> junction;
+  if (last_) junction = StrokeJunction::between(*last_, next);
+  if (!junction) return CutContinuation{{}, nullptr, {}, leading};  // the first step of a crack
+  junctions_.push_back(*junction);
+  tentative_ = true;
+  return CutContinuation{junctions_, &sides_, front_, leading};
+}
+
+void StrokeCrack::record(const CutPolygon& polygon, const MtChangeReport& report) {
+  if (tentative_) junctions_.pop_back();
+  tentative_ = false;
+  std::optional<StrokeJunction> junction;
+  if (last_) junction = StrokeJunction::between(*last_, polygon);
+  if (junction) {
+    junctions_.push_back(*junction);
+  } else {
+    junctions_.clear();
+    sides_.clear();
+  }
+  last_ = polygon;
+  for (const MadeVertex& made : report.made_vertices) {
+    if (made.key.kind == PointKind::kFacePoint) {  // where the crack ends, on no side
+      front_.push_back({made.id, {VertId(made.key.ids[0]), VertId(made.key.ids[1]), VertId(made.key.ids[2])}});
+      continue;
+    }
+    if (made.key.side == 0) continue;
+    sides_[made.id.value] = made.key.side;
+    // A vertex the cut passed through keeps its id on the positive side.
+    if (made.key.kind == PointKind::kVertexCopy) sides_[made.key.ids[0]] = 1;
+  }
+  // A face point this or an earlier cut of the stroke split is part of the
+  // crack now, no longer its front.
+  std::erase_if(front_, [&](const CrackFrontPoint& f) { return sides_.contains(f.id.value); });
+}
+
+void StrokeCrack::clear() {
+  last_.reset();
+  junctions_.clear();
+  tentative_ = false;
+  sides_.clear();
+  front_.clear();
+}
+
+}  // namespace mtcut::cut
