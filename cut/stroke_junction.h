@@ -37,15 +37,20 @@
 //    step, where the next one starts) are put exactly where the outline
 //    leaves their faces, on the line both planes hold, in every resolution
 //    alike; elsewhere (the blade's tip inside the tissue) they keep the
-//    clamp, as the crack's lasting outline.
+//    clamp, as the crack's lasting outline;
+//  - the rest of the front that lies on the sheet is where the crack ends:
+//    on the cut but not split (kOnInactive), so no cut point is made beside
+//    it (rounding would side it, and a split among such points on the sheet
+//    made flat tets).
 // What is covered (cut) is still the polygon's alone: an edge must cross its
 // plane inside it. Behind the junction nothing is cut again.
 //
-// Known limits (tests/cut/mt/scalpel_steps_test.cpp, the DISABLED tests): a
-// stroke whose blade tip stays inside the tissue, in steps much shorter than
-// the coarse tets, leaves fronts along the tip's line that later steps meet
-// (flat tets, non-manifold edges), and turns of tens of degrees per step
-// leave tets straddling both planes whose cut differs between resolutions.
+// Known limits (tests/cut/mt/scalpel_steps_test.cpp, the DISABLED tests):
+// turns of tens of degrees per step leave tets straddling the sheet behind
+// the junction and not the new plane, whose cut differs between resolutions;
+// and some strokes with the tip inside the tissue in steps far shorter than
+// the coarse tets still break the coarsest frontier (ellipsoid) or make a
+// flat tet (box).
 
 #include <array>
 #include <cstdint>

@@ -109,7 +109,13 @@ CutClassifier::CutClassifier(const CutPolygon& polygon, std::span<const Vec3> po
         longest = std::max(longest, (positions_[f.face[i].index()] - positions_[f.face[(i + 1) % 3].index()]).norm());
       const Vec3& p = positions_[f.id.index()];
       const double reach = (ClassifierDef::kMinSnap + 1e-9) * longest;
-      if (polygon_.distance_outside(p) > reach || std::abs(polygon_.signed_distance(p)) > reach) continue;
+      if (polygon_.distance_outside(p) > reach || std::abs(polygon_.signed_distance(p)) > reach) {
+        // Elsewhere on the sheet (where the blade's tip ended a step) the
+        // crack ends at it: on the cut, not split, whatever side rounding
+        // puts it on, so no cut point is made next to it.
+        if (std::abs(distance(f.id)) <= reach) edit(f.id).crack_end = true;
+        continue;
+      }
       edit(f.id).pulled = true;
       put_on(f.id);
     }
@@ -300,6 +306,7 @@ void CutClassifier::finalize() {
 VertexState CutClassifier::state(VertId v) const {
   const VertexInfo& info = at(v);
   if (finalized_ && info.on) return VertexState::kOnActive;
+  if (info.crack_end) return VertexState::kOnInactive;
   if (info.kept_side != 0) return info.kept_side < 0 ? VertexState::kNeg : VertexState::kPos;
   // Exactly on the plane but kept off the cut, or never part of a candidate
   // (far from the cut): positive.

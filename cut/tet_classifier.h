@@ -102,6 +102,7 @@ class CutClassifier {
     bool requested_off = false;  // by veto()
     bool pulled = false;       // on the cut by request
     bool crack_sided = false;  // behind a stroke's junction, made by the stroke: sided by its crack
+    bool crack_end = false;    // a stroke's front on its sheet, off the polygon: kOnInactive
     std::int8_t kept_side = 0; // side of a vertex kept off the cut (0: its raw side)
     double lean = 0;           // sum of its candidate neighbours' distances to the plane
     double reach2 = 0;         // squared length of the longest candidate edge at the vertex
