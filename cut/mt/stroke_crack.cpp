@@ -21,9 +21,10 @@ void StrokeCrack::record(const CutPolygon& polygon, const MtChangeReport& report
   if (last_) junction = StrokeJunction::between(*last_, polygon);
   if (junction) {
     junctions_.push_back(*junction);
-  } else {
+  } else {  // a new crack
     junctions_.clear();
     sides_.clear();
+    front_.clear();
   }
   last_ = polygon;
   for (const MadeVertex& made : report.made_vertices) {

@@ -57,11 +57,17 @@ TEST(StrokeCrack, StepsSharingAnEdgeContinueTheCrackAndOthersStartANewOne) {
   EXPECT_EQ(crack.num_sided(), 6u);
   EXPECT_TRUE(crack.continuation(q1, Vec3(1, 0, 1), Vec3(1, 0, -1)).front.empty());
 
-  // A polygon away from the last one starts a new crack.
+  // A polygon away from the last one starts a new crack: nothing of the old
+  // one (its sides, its front) is carried over.
+  MtChangeReport r2;
+  r2.made_vertices = {made(21, PointKind::kFacePoint, 0, {7, 8, 9, -1})};
+  crack.record(q1, r2);
+  EXPECT_EQ(crack.continuation(q1, Vec3(1, 0, 1), Vec3(1, 0, -1)).front.size(), 1u);
   EXPECT_TRUE(crack.continuation(far, Vec3(6, 0, 1), Vec3(6, 0, -1)).junctions.empty());
   crack.record(far, MtChangeReport{});
   EXPECT_EQ(crack.num_sided(), 0u);
   EXPECT_EQ(crack.num_junctions(), 0u);
+  EXPECT_TRUE(crack.continuation(blade_quad(6, 7), Vec3(7, 0, 1), Vec3(7, 0, -1)).front.empty());
 }
 
 }  // namespace
