@@ -35,7 +35,9 @@ std::optional<StrokeJunction> StrokeJunction::between(const CutPolygon& previous
   return std::nullopt;
 }
 
-int StrokeJunction::ahead(const Vec3& x) const { return engine::orient3d_sign(divider_[0], divider_[1], divider_[2], x); }
+int StrokeJunction::ahead(const Vec3& x) const {
+  return engine::orient3d_sign(divider_[0], divider_[1], divider_[2], x);
+}
 
 const CutPolygon& CutContinuation::polygon_behind(const engine::Vec3& x) const {
   // junctions[j] joins polygon j (its previous()) to polygon j + 1.

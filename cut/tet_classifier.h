@@ -18,18 +18,22 @@
 //                  margin of it): the cut passes through the vertex, which is
 //                  split in two (the positive side keeps the id);
 //   kOnInactive    on the plane, not split, the cut ending at it: supported
-//                  by the split rules, never produced by this classifier,
-//                  which keeps such vertices off the cut instead (below).
+//                  by the split rules; produced only for the front an
+//                  earlier step of a stroke left on its sheet (a
+//                  continuation, stroke_junction.h). Other such vertices
+//                  are kept off the cut instead (below).
 // A vertex is "on" when it is exactly on the plane, or when a straddling edge
 // of a candidate tet meets the plane within `snap` (a fraction of the edge)
 // of it, and it projects into the polygon grown by (snap + face_clamp) times
 // its longest edge (so that a stroke continuing an incision splits the face
-// points the previous stroke left near its outline). The vertex is not moved: the cut surface bends through it. A vertex
-// that would be on but lies off the polygon (or is vetoed) is kept off the
-// cut: it keeps its side, or when it lies on the plane (to rounding) the side
-// its neighbours lean to (a copy made by an earlier cut in this plane goes
-// with its tets), and cut points stay `snap` away from it. Hence every cut point lies in [snap, 1 - snap]
-// of its edge, and no sliver is made (DESIGN.md, "Degenerate contacts").
+// points the previous stroke left near its outline). The vertex is not
+// moved: the cut surface bends through it. A vertex that would be on but
+// lies off the polygon (or is vetoed) is kept off the cut: it keeps its side,
+// or when it lies on the plane (to rounding) the side its neighbours lean to
+// (a copy made by an earlier cut in this plane goes with its tets), and cut
+// points stay `snap` away from it. Hence every cut point lies in
+// [snap, 1 - snap] of its edge, and no sliver is made (DESIGN.md,
+// "Degenerate contacts").
 
 #include <algorithm>
 #include <array>
