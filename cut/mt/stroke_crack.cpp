@@ -1,5 +1,7 @@
 #include "cut/mt/stroke_crack.h"
 
+#include <string>
+
 namespace mtcut::cut {
 
 CutContinuation StrokeCrack::continuation(const CutPolygon& next, const Vec3& blade_base, const Vec3& blade_tip) {
@@ -40,6 +42,20 @@ void StrokeCrack::record(const CutPolygon& polygon, const MtChangeReport& report
   // A face point this or an earlier cut of the stroke split is part of the
   // crack now, no longer its front.
   std::erase_if(front_, [&](const CrackFrontPoint& f) { return sides_.contains(f.id.value); });
+}
+
+engine::ValidationReport StrokeCrack::validate() const {
+  engine::ValidationReport report;
+  for (const auto& [id, side] : sides_)
+    if (side != 1 && side != -1)
+      report.add("StrokeCrack: vertex " + std::to_string(id) + " has side " + std::to_string(side));
+  for (const CrackFrontPoint& f : front_)
+    if (sides_.contains(f.id.value))
+      report.add("StrokeCrack: front point " + std::to_string(f.id.value) + " is sided (it was split)");
+  if (tentative_ && junctions_.empty()) report.add("StrokeCrack: a continuation is out with no junction");
+  if (!last_ && (!junctions_.empty() || !sides_.empty() || !front_.empty()))
+    report.add("StrokeCrack: no cut recorded, but junctions, sides or a front are held");
+  return report;
 }
 
 void StrokeCrack::clear() {

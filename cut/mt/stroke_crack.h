@@ -10,6 +10,7 @@
 #include "cut/cut_polygon.h"
 #include "cut/mt/mt_change_report.h"
 #include "cut/stroke_junction.h"
+#include "engine/validation.h"
 
 namespace mtcut::cut {
 
@@ -30,6 +31,10 @@ class StrokeCrack {
 
   std::size_t num_sided() const { return sides_.size(); }         // vertices sided so far
   std::size_t num_junctions() const { return junctions_.size(); }  // recorded ones
+
+  // Sides are +1 / -1, no front point is sided (a split one left the
+  // front), and a crack with no recorded cut holds nothing.
+  engine::ValidationReport validate() const;
 
  private:
   std::optional<CutPolygon> last_;

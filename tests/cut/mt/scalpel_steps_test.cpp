@@ -57,6 +57,7 @@ StrokeResult cut_steps(const std::string& name, const StrokeDef& def, Path&& pat
     options.def.continuation = &continuation;
     const cut::MtChangeReport r = cut::cut_mt(mt, bvh, quad, {}, options);
     crack.record(quad, r);
+    EXPECT_TRUE(crack.validate().ok()) << name << " step " << k << ": " << crack.validate().summary();
     const auto report = mt.validate();
     EXPECT_TRUE(report.ok()) << name << " step " << k << ": " << report.summary();
     if (!report.ok()) return out;

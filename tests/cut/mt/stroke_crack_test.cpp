@@ -35,6 +35,7 @@ TEST(StrokeCrack, StepsSharingAnEdgeContinueTheCrackAndOthersStartANewOne) {
                       made(12, PointKind::kVertexCopy, -1, {3, -1, -1, -1}),
                       made(13, PointKind::kFacePoint, 0, {4, 5, 6, -1})};
   crack.record(q0, r0);
+  EXPECT_TRUE(crack.validate().ok()) << crack.validate().summary();
   EXPECT_EQ(crack.num_sided(), 4u);  // 10, 11, the copy 12 and vertex 3, which kept its id on the + side
   EXPECT_EQ(crack.num_junctions(), 0u);
 
@@ -53,6 +54,7 @@ TEST(StrokeCrack, StepsSharingAnEdgeContinueTheCrackAndOthersStartANewOne) {
   MtChangeReport r1;
   r1.made_vertices = {made(20, PointKind::kVertexCopy, -1, {13, -1, -1, -1})};
   crack.record(q1, r1);
+  EXPECT_TRUE(crack.validate().ok()) << crack.validate().summary();
   EXPECT_EQ(crack.num_junctions(), 1u);
   EXPECT_EQ(crack.num_sided(), 6u);
   EXPECT_TRUE(crack.continuation(q1, Vec3(1, 0, 1), Vec3(1, 0, -1)).front.empty());
@@ -65,9 +67,13 @@ TEST(StrokeCrack, StepsSharingAnEdgeContinueTheCrackAndOthersStartANewOne) {
   EXPECT_EQ(crack.continuation(q1, Vec3(1, 0, 1), Vec3(1, 0, -1)).front.size(), 1u);
   EXPECT_TRUE(crack.continuation(far, Vec3(6, 0, 1), Vec3(6, 0, -1)).junctions.empty());
   crack.record(far, MtChangeReport{});
+  EXPECT_TRUE(crack.validate().ok()) << crack.validate().summary();
   EXPECT_EQ(crack.num_sided(), 0u);
   EXPECT_EQ(crack.num_junctions(), 0u);
   EXPECT_TRUE(crack.continuation(blade_quad(6, 7), Vec3(7, 0, 1), Vec3(7, 0, -1)).front.empty());
+  crack.clear();
+  EXPECT_TRUE(crack.validate().ok()) << crack.validate().summary();
+  EXPECT_EQ(crack.num_junctions(), 0u);
 }
 
 }  // namespace
