@@ -175,50 +175,43 @@ double CutPolygon::distance_outside(const Vec3& x) const {
   return inside ? 0.0 : best;
 }
 
-double CutPolygon::exit_parameter(const Vec3& p, const Vec3& q) const {
+CutPolygon::Clip CutPolygon::clip(const Vec3& p, const Vec3& q) const {
+  // Each edge's inner half-plane bounds the parameter from below (the
+  // segment enters across it) or above (it leaves): Cyrus-Beck.
   const Eigen::Vector2d a = project(p);
   const Eigen::Vector2d dir = project(q) - a;
   const std::size_t n = corners2d_.size();
-  double s_max = 1.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d& c = corners2d_[i];
-    const Eigen::Vector2d e = corners2d_[(i + 1) % n] - c;
-    const Eigen::Vector2d inward(-e.y(), e.x());
-    const double f0 = inward.dot(a - c);
-    if (f0 < 0) return 0.0;
-    const double slope = inward.dot(dir);
-    if (slope < 0) s_max = std::min(s_max, f0 / -slope);
-  }
-  return std::clamp(s_max, 0.0, 1.0);
-}
-
-double CutPolygon::last_inside_parameter(const Vec3& p, const Vec3& q, int* edge) const {
-  // The segment clipped by each edge's inner half-plane (Cyrus-Beck).
-  const Eigen::Vector2d a = project(p);
-  const Eigen::Vector2d dir = project(q) - a;
-  const std::size_t n = corners2d_.size();
-  double s_min = 0.0, s_max = 1.0;
-  int leaves = -1;
-  if (edge) *edge = -1;
+  Clip out;
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector2d& c = corners2d_[i];
     const Eigen::Vector2d e = corners2d_[(i + 1) % n] - c;
     const Eigen::Vector2d inward(-e.y(), e.x());
     const double f0 = inward.dot(a - c), slope = inward.dot(dir);
+    out.starts_outside |= f0 < 0;
     if (slope > 0) {
-      s_min = std::max(s_min, -f0 / slope);
+      out.entry = std::max(out.entry, -f0 / slope);
     } else if (slope < 0) {
-      if (f0 / -slope < s_max) {
-        s_max = f0 / -slope;
-        leaves = static_cast<int>(i);
+      if (f0 / -slope < out.exit) {
+        out.exit = f0 / -slope;
+        out.exit_edge = static_cast<int>(i);
       }
     } else if (f0 < 0) {
-      return 0.0;
+      out.misses = true;
     }
   }
-  if (s_min > s_max) return 0.0;
-  if (edge) *edge = leaves;
-  return std::clamp(s_max, 0.0, 1.0);
+  out.misses |= out.entry > out.exit;
+  return out;
+}
+
+double CutPolygon::exit_parameter(const Vec3& p, const Vec3& q) const {
+  const Clip c = clip(p, q);
+  return c.starts_outside ? 0.0 : std::clamp(c.exit, 0.0, 1.0);
+}
+
+double CutPolygon::last_inside_parameter(const Vec3& p, const Vec3& q, int* edge) const {
+  const Clip c = clip(p, q);
+  if (edge) *edge = c.misses ? -1 : c.exit_edge;
+  return c.misses ? 0.0 : std::clamp(c.exit, 0.0, 1.0);
 }
 
 int CutPolygon::edge_between(const Vec3& a, const Vec3& b) const {

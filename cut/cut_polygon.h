@@ -81,6 +81,16 @@ class CutPolygon {
   int edge_between(const Vec3& a, const Vec3& b) const;
 
  private:
+  // The segment p -> q (projected) clipped to the polygon: its parameters
+  // run inside over [entry, exit] (exit across outline edge exit_edge, -1
+  // when it ends inside) unless it misses the polygon.
+  struct Clip {
+    double entry = 0.0, exit = 1.0;
+    int exit_edge = -1;
+    bool starts_outside = false;  // p projects outside
+    bool misses = false;
+  };
+  Clip clip(const Vec3& p, const Vec3& q) const;
   Eigen::Vector2d project(const Vec3& x) const;
 
   std::vector<Vec3> corners_;

@@ -1,6 +1,6 @@
 #include "cut/stroke_junction.h"
 
-#include <algorithm>
+#include <utility>
 
 #include "engine/predicates.h"
 
@@ -10,16 +10,11 @@ using engine::Vec3;
 
 std::optional<StrokeJunction> StrokeJunction::between(const CutPolygon& previous, const CutPolygon& next) {
   if (previous.normal().dot(next.normal()) <= 0) return std::nullopt;
-  const double tolerance = 1e-9 * std::max(previous.diameter(), next.diameter());
-  const auto is_previous_corner = [&](const Vec3& x) {
-    return std::any_of(previous.corners().begin(), previous.corners().end(),
-                       [&](const Vec3& c) { return (c - x).norm() <= tolerance; });
-  };
   const std::vector<Vec3>& corners = next.corners();
   const std::size_t n = corners.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 &a = corners[i], &b = corners[(i + 1) % n];
-    if (!is_previous_corner(a) || !is_previous_corner(b)) continue;
+    if (previous.edge_between(a, b) < 0) continue;
     // The dividing plane holds the edge and the bisector of the two normals;
     // it is oriented so that the next polygon's centre is ahead.
     const Vec3 up = (previous.normal() + next.normal()).normalized();
@@ -30,7 +25,7 @@ std::optional<StrokeJunction> StrokeJunction::between(const CutPolygon& previous
     const int side = engine::orient3d_sign(divider[0], divider[1], divider[2], centre);
     if (side == 0) return std::nullopt;
     if (side < 0) std::swap(divider[0], divider[1]);
-    return StrokeJunction(previous, {a, b}, divider);
+    return StrokeJunction(previous, divider);
   }
   return std::nullopt;
 }

@@ -69,9 +69,8 @@ using CrackSides = absl::flat_hash_map<std::int32_t, std::int8_t>;
 
 class StrokeJunction {
  public:
-  // The junction of `previous` and `next` when `next` has an edge whose ends
-  // are corners of `previous` (within 1e-9 of the larger diameter) and the
-  // two face the same way (their normals' dot product positive: the stroke
+  // The junction of `previous` and `next` when an edge of `next` is an edge
+  // of `previous` (CutPolygon::edge_between) and the two face the same way (their normals' dot product positive: the stroke
   // goes on, it does not fold back); else nothing.
   static std::optional<StrokeJunction> between(const CutPolygon& previous, const CutPolygon& next);
 
@@ -79,16 +78,12 @@ class StrokeJunction {
   // on the previous one's, 0 on it.
   int ahead(const engine::Vec3& x) const;
   const CutPolygon& previous() const { return previous_; }
-  // The shared edge (the next polygon's corners).
-  const std::array<engine::Vec3, 2>& edge() const { return edge_; }
 
  private:
-  StrokeJunction(const CutPolygon& previous, const std::array<engine::Vec3, 2>& edge,
-                 const std::array<engine::Vec3, 3>& divider)
-      : previous_(previous), edge_(edge), divider_(divider) {}
+  StrokeJunction(const CutPolygon& previous, const std::array<engine::Vec3, 3>& divider)
+      : previous_(previous), divider_(divider) {}
 
   CutPolygon previous_;
-  std::array<engine::Vec3, 2> edge_;
   std::array<engine::Vec3, 3> divider_;  // the dividing plane, positively oriented toward `next`
 };
 

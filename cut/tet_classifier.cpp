@@ -149,15 +149,15 @@ std::int8_t CutClassifier::compute_side(VertId v) const {
   if (continuation_ && !continuation_->junctions.empty() && continuation_->last().ahead(p) < 0) {  // behind
     const CutPolygon& previous = continuation_->polygon_behind(p);
     info.distance = previous.signed_distance(p);
-    const CrackSides* sides = continuation_->sides;
-    const auto it = sides ? sides->find(v.value) : CrackSides::const_iterator{};
-    if (sides && it != sides->end()) {
-      info.raw = it->second;
-      info.crack_sided = true;
-      info.vetoed = true;  // never snapped onto the cut: it lies in the crack, on its side
-    } else {
-      info.raw = static_cast<std::int8_t>(previous.side(p));
+    if (const CrackSides* sides = continuation_->sides) {
+      if (const auto it = sides->find(v.value); it != sides->end()) {
+        info.raw = it->second;
+        info.crack_sided = true;
+        info.vetoed = true;  // never snapped onto the cut: it lies in the crack, on its side
+        return info.raw;
+      }
     }
+    info.raw = static_cast<std::int8_t>(previous.side(p));
     return info.raw;
   }
   info.raw = static_cast<std::int8_t>(polygon_.side(p));
