@@ -70,8 +70,9 @@ using CrackSides = absl::flat_hash_map<std::int32_t, std::int8_t>;
 class StrokeJunction {
  public:
   // The junction of `previous` and `next` when an edge of `next` is an edge
-  // of `previous` (CutPolygon::edge_between) and the two face the same way (their normals' dot product positive: the stroke
-  // goes on, it does not fold back); else nothing.
+  // of `previous` (CutPolygon::edge_between) and the two face the same way
+  // (their normals' dot product positive: the stroke goes on, it does not
+  // fold back); else nothing.
   static std::optional<StrokeJunction> between(const CutPolygon& previous, const CutPolygon& next);
 
   // Exact: +1 when x is on the next polygon's side of the dividing plane, -1
