@@ -31,7 +31,7 @@ bool springs_in_run_order(const SpringModel& model);
 
 // Two springs of a run, lane by lane.
 struct SpringPair {
-  Lanes2 stiffness, rest_length, damping;  // N/m, m, N s/m; 0 in a pad lane
+  Lanes2 stiffness, stiffness_rest, damping;  // k (N/m), k L (N), c (N s/m); 0 in a pad lane
 };
 
 // Each particle's run of springs in pairs, padded to an even count with a
