@@ -14,6 +14,7 @@
 
 #include "cut/recipe_faces.h"
 #include "cut/tet_splitter.h"
+#include "engine/radix_sort.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {
@@ -276,13 +277,10 @@ void MtCut::number_points_by_key() {
   // Ids follow the keys, not the scan: the scan's order is that of tet ids,
   // which follow the order the jobs of the last cut ran in. The keys are
   // sorted by value, packed into three words in key_less's order (an
-  // indirect sort reads a scattered point per comparison).
+  // indirect sort reads a scattered point per comparison), by radix.
   struct Packed {
     std::uint64_t kind_side, ids01, ids23;  // ids + 1 (>= 0) in 32 bits each
     std::int32_t index;
-    bool operator<(const Packed& o) const {
-      return std::tie(kind_side, ids01, ids23) < std::tie(o.kind_side, o.ids01, o.ids23);
-    }
   };
   const auto pack = [](const PointKey& k, std::size_t index) {
     const auto id = [&](int i) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(k.ids[i] + 1)); };
@@ -293,7 +291,8 @@ void MtCut::number_points_by_key() {
   std::vector<Packed> order;
   order.reserve(n);
   for (std::size_t i = 0; i < n; ++i) order.push_back(pack(points_[i].key, i));
-  std::sort(order.begin(), order.end());
+  std::vector<Packed> scratch;
+  engine::radix_sort<3>(order, scratch, [](const Packed& p) { return std::array{p.kind_side, p.ids01, p.ids23}; });
   std::vector<std::int32_t> rank(n);
   std::vector<NewPoint> sorted;
   sorted.reserve(n);
