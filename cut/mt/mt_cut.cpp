@@ -121,6 +121,7 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
         return true;
       });
   sort_unique(found, workspace_->id_bits);  // BVH order must not leak into the result
+  classifier.expect_candidates(found.size());
   for (TetId t : found) classifier.add_candidate(mt.tet(t));
   add_tets_around_on_vertices(mt, bvh, classifier, found);
   classifier.finalize();
