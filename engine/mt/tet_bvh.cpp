@@ -1,6 +1,7 @@
 #include "engine/mt/tet_bvh.h"
 
 #include <cassert>
+#include <string>
 
 #include "engine/mt/frontier.h"
 
@@ -164,6 +165,64 @@ void TetBvh::replace(const Mt& mt, TetId old, std::span<const TetId> pieces) {
       insert(mt, t);
     }
   }
+}
+
+ValidationReport TetBvh::validate(const Mt& mt) const {
+  ValidationReport report;
+  const auto tet_name = [](std::int32_t t) { return "TetBvh: tet " + std::to_string(t); };
+  const auto holds = [](const Aabb& outer, const Aabb& inner) {
+    return outer.contains(inner.lo) && outer.contains(inner.hi);
+  };
+  // Each tet listed once: where_ points back at the one slot or extra
+  // entry that lists it, in a leaf whose box holds the tet.
+  std::size_t listed = 0;
+  const auto check_entry = [&](std::int32_t t, std::int32_t where, std::int32_t leaf) {
+    ++listed;
+    if (t < 0 || static_cast<std::size_t>(t) >= mt.num_tets() || !mt.alive(TetId(t))) {
+      report.add(tet_name(t) + " is indexed but not a live tet");
+      return;
+    }
+    if (static_cast<std::size_t>(t) >= where_.size() || where_[static_cast<std::size_t>(t)] != where)
+      report.add(tet_name(t) + " is listed where where_ does not say");
+    const auto nodes = bvh_.nodes();
+    if (leaf < 0 || static_cast<std::size_t>(leaf) >= nodes.size() || !nodes[static_cast<std::size_t>(leaf)].leaf())
+      report.add(tet_name(t) + " is in no leaf");
+    else if (!holds(nodes[static_cast<std::size_t>(leaf)].box, tet_box(mt, TetId(t))))
+      report.add(tet_name(t) + " pokes out of its leaf's box");
+  };
+  const auto nodes = bvh_.nodes();
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    const BvhNode& node = nodes[n];
+    if (!node.leaf()) {
+      for (std::size_t c = 0; c < 2; ++c) {
+        const std::size_t child = static_cast<std::size_t>(node.first) + c;
+        if (child >= nodes.size() || child <= n)
+          report.add("TetBvh: node " + std::to_string(n) + " has child " + std::to_string(child) + " out of order");
+        else if (!nodes[child].box.empty() && !holds(node.box, nodes[child].box))
+          report.add("TetBvh: node " + std::to_string(n) + "'s box does not hold child " + std::to_string(child));
+      }
+      continue;
+    }
+    for (std::int32_t i = node.first; i < node.first + node.count; ++i) {
+      const std::int32_t t = slot_tet_[static_cast<std::size_t>(i)];
+      if (t >= 0) check_entry(t, i, static_cast<std::int32_t>(n));
+      if (slot_leaf_[static_cast<std::size_t>(i)] != static_cast<std::int32_t>(n))
+        report.add("TetBvh: slot " + std::to_string(i) + " names the wrong leaf");
+    }
+    for (std::int32_t e = extra_head_[n]; e >= 0; e = extra_next_[static_cast<std::size_t>(e)]) {
+      const std::int32_t t = extra_tet_[static_cast<std::size_t>(e)];
+      if (t >= 0) check_entry(t, -e - 2, static_cast<std::int32_t>(n));
+      if (extra_leaf_[static_cast<std::size_t>(e)] != static_cast<std::int32_t>(n))
+        report.add("TetBvh: inserted entry " + std::to_string(e) + " names the wrong leaf");
+    }
+  }
+  // Every live tet indexed; the count of indexed tets right.
+  for (std::size_t t = 0; t < mt.num_tets(); ++t)
+    if (mt.alive(TetId(t)) && (t >= where_.size() || where_[t] == -1))
+      report.add(tet_name(static_cast<std::int32_t>(t)) + " is live but not indexed");
+  if (listed != indexed_)
+    report.add("TetBvh: " + std::to_string(listed) + " tets listed, " + std::to_string(indexed_) + " counted");
+  return report;
 }
 
 bool TetBvh::refresh(const Mt& mt) {

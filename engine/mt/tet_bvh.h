@@ -19,6 +19,7 @@
 
 #include "engine/mt/bvh.h"
 #include "engine/mt/mt.h"
+#include "engine/validation.h"
 
 namespace mtcut::engine {
 
@@ -110,6 +111,12 @@ class TetBvh {
   bool worn() const { return edits_ > indexed_ / 2 + 64; }
   // Rebuilds when worn(); returns whether it did.
   bool refresh(const Mt& mt);
+
+  // The index over `mt` as it is (O(n_tets + n_nodes), for tests): it holds
+  // exactly the live tets, each once, where where_ says; every node's box
+  // holds its children's, and every leaf's the boxes of its tets, so no
+  // query can miss one; the counts add up.
+  ValidationReport validate(const Mt& mt) const;
 
  private:
   // The leaf indexing t (-1 when t is not indexed).

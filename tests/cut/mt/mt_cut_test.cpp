@@ -70,6 +70,7 @@ void run_sequence(const std::string& name, int cuts, std::uint64_t seed) {
     options.order = static_cast<JobOrder>(i % 3);
     options.seed = seed + static_cast<std::uint64_t>(i);
     const MtChangeReport r = cut_mt(mt, bvh, polygons.back(), {}, options, &table);
+    ASSERT_TRUE(bvh.validate(mt).ok()) << name << " cut " << i << ": " << bvh.validate(mt).summary();
     split += r.counts.split_tets;
     whole += r.counts.whole_fragments;
     EXPECT_EQ(r.counts.new_vertices, r.made_vertices.size());

@@ -60,6 +60,7 @@ StrokeResult cut_steps(const std::string& name, const StrokeDef& def, Path&& pat
     EXPECT_TRUE(crack.validate().ok()) << name << " step " << k << ": " << crack.validate().summary();
     const auto report = mt.validate();
     EXPECT_TRUE(report.ok()) << name << " step " << k << ": " << report.summary();
+    EXPECT_TRUE(bvh.validate(mt).ok()) << name << " step " << k << ": " << bvh.validate(mt).summary();
     if (!report.ok()) return out;
     const std::vector<std::uint8_t> after = used_vertices(mt);
     for (const auto& made : r.made_vertices) EXPECT_TRUE(after[made.id.index()]) << name << " step " << k;

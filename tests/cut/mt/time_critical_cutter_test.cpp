@@ -53,6 +53,7 @@ Mt run_cutter(const std::vector<CutPolygon>& polygons, const CutBudget& budget, 
     EXPECT_EQ(frontier_difference(frontier, rebuilt), "") << "after call " << calls;
     const auto cr = cutter.validate(mt);
     EXPECT_TRUE(cr.ok()) << cr.summary();
+    EXPECT_TRUE(bvh.validate(mt).ok()) << "after call " << calls << ": " << bvh.validate(mt).summary();
     finished += result.cuts_finished;
     const auto p = cutter.progress();
     // Spread visible jobs leave the visible mesh half cut: the World waits for them.

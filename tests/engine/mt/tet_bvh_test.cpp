@@ -49,6 +49,7 @@ TEST(TetBvh, FindsEveryTetHoldingAPointAtEveryResolution) {
     const Mt& mt = test_mt(name);
     const TetBvh bvh(mt);
     EXPECT_EQ(bvh.size(), mt.num_live_tets());
+    EXPECT_TRUE(bvh.validate(mt).ok()) << name << ": " << bvh.validate(mt).summary();
     std::size_t inside = 0;
     for (const Vec3& p : random_points(mt, 300, 1)) {
       const auto expected = brute_force_containing(mt, p);
@@ -130,11 +131,29 @@ TEST(TetBvh, FollowsReplacedTets) {
       while (!mt.alive(t)) t = TetId(static_cast<std::size_t>(rng() % mt.num_tets()));
       const auto pieces = split_at_centroid(mt, t);
       bvh.replace(mt, t, pieces);
+      ASSERT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
     }
     EXPECT_EQ(bvh.size(), mt.num_live_tets());
     for (const Vec3& p : random_points(mt, 150, 3 + static_cast<unsigned>(round)))
       ASSERT_EQ(bvh_containing(mt, bvh, p), brute_force_containing(mt, p));
   }
+}
+
+TEST(TetBvh, ValidateFindsAnIndexThatMissedAnEdit) {
+  Mt mt = test_mt("box");
+  TetBvh bvh(mt);
+  ASSERT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
+  // Pieces added to the MT but not to the index: live tets it misses, and a
+  // killed tet it still lists.
+  const TetId t(17);
+  ASSERT_TRUE(mt.alive(t));
+  const auto pieces = split_at_centroid(mt, t);
+  const std::string summary = bvh.validate(mt).summary();
+  EXPECT_NE(summary.find("tet 17 is indexed but not a live tet"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("tet " + std::to_string(pieces[0].value) + " is live but not indexed"), std::string::npos)
+      << summary;
+  bvh.replace(mt, t, pieces);
+  EXPECT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
 }
 
 TEST(TetBvh, OverlapQueryReturnsEveryCandidate) {
