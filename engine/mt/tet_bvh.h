@@ -98,7 +98,9 @@ class TetBvh {
 
   // Edits that follow the MT's, made after it: t left the MT / t joined it;
   // `pieces` took the place of `old` (the cutter's R(t); old already killed,
-  // pieces already added). Edits never rebuild: they are cheap (one
+  // pieces already added; each piece's corners are old's or convex
+  // combinations of them, as a split makes them: validate() finds a piece
+  // that pokes out of old's leaf). Edits never rebuild: they are cheap (one
   // root-to-leaf path), and a rebuild (about 10 ms at 60k tets) must not
   // land inside the cutter's time-critical budget. The owner calls refresh()
   // at a quiet moment instead.
