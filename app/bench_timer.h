@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace mtcut::app {
@@ -16,17 +17,25 @@ struct BatchTiming {
   int batches = 0;
 };
 
+// The seconds one run of `batch` took.
+inline double time_once(const std::function<void()>& batch) {
+  const auto start = std::chrono::steady_clock::now();
+  batch();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Median, min and max of one timing per batch.
+inline BatchTiming summarize(std::vector<double> seconds) {
+  std::sort(seconds.begin(), seconds.end());
+  return {seconds[seconds.size() / 2], seconds.front(), seconds.back(), static_cast<int>(seconds.size())};
+}
+
 // Runs `batch` once to warm up, then `batches` times, timing each.
 inline BatchTiming time_batches(int batches, const std::function<void()>& batch) {
   batch();
   std::vector<double> seconds;
-  for (int i = 0; i < batches; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    batch();
-    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(seconds.begin(), seconds.end());
-  return {seconds[seconds.size() / 2], seconds.front(), seconds.back(), batches};
+  for (int i = 0; i < batches; ++i) seconds.push_back(time_once(batch));
+  return summarize(std::move(seconds));
 }
 
 // Two batches timed in alternation (a, b, a, b, ... after a warm-up of
@@ -43,22 +52,12 @@ inline PairedTiming time_batch_pair(int batches, const std::function<void()>& a,
   a();
   b();
   std::vector<double> sa, sb, ratio;
-  const auto timed = [](const std::function<void()>& batch) {
-    const auto start = std::chrono::steady_clock::now();
-    batch();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
   for (int i = 0; i < batches; ++i) {
-    sa.push_back(timed(a));
-    sb.push_back(timed(b));
+    sa.push_back(time_once(a));
+    sb.push_back(time_once(b));
     ratio.push_back(sa.back() / sb.back());
   }
-  const auto summary = [batches](std::vector<double> s) {
-    std::sort(s.begin(), s.end());
-    return BatchTiming{s[s.size() / 2], s.front(), s.back(), batches};
-  };
-  std::sort(ratio.begin(), ratio.end());
-  return {summary(sa), summary(sb), ratio[ratio.size() / 2]};
+  return {summarize(std::move(sa)), summarize(std::move(sb)), summarize(std::move(ratio)).median_seconds};
 }
 
 }  // namespace mtcut::app

@@ -9,7 +9,6 @@
 // finds them and they are neither counted nor sorted on; the rest is a
 // handful of linear passes.
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>

@@ -20,8 +20,8 @@ namespace {
 // Pieces of t (replace()) are convex combinations of its corners, which round
 // to within a few ulps of t's box; so pieces of pieces, over up to a million
 // generations of cuts, still fit in the box t's leaf was given, and replace()
-// needs no box of its own for them (a fifth of the time the cutter spends
-// replacing tets).
+// needs no box of its own for them (0.3 ms of the 2 ms Table 1's largest cut
+// spends replacing tets).
 Aabb indexed_box(const Mt& mt, TetId t) {
   Aabb box = tet_box(mt, t);
   const double pad = 1e-9 * std::max(box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff());
@@ -184,6 +184,7 @@ ValidationReport TetBvh::validate(const Mt& mt) const {
   const auto holds = [](const Aabb& outer, const Aabb& inner) {
     return outer.contains(inner.lo) && outer.contains(inner.hi);
   };
+  const auto nodes = bvh_.nodes();
   // Each tet listed once: where_ points back at the one slot or extra
   // entry that lists it, in a leaf whose box holds the tet.
   std::size_t listed = 0;
@@ -195,13 +196,11 @@ ValidationReport TetBvh::validate(const Mt& mt) const {
     }
     if (static_cast<std::size_t>(t) >= where_.size() || where_[static_cast<std::size_t>(t)] != where)
       report.add(tet_name(t) + " is listed where where_ does not say");
-    const auto nodes = bvh_.nodes();
     if (leaf < 0 || static_cast<std::size_t>(leaf) >= nodes.size() || !nodes[static_cast<std::size_t>(leaf)].leaf())
       report.add(tet_name(t) + " is in no leaf");
     else if (!holds(nodes[static_cast<std::size_t>(leaf)].box, tet_box(mt, TetId(t))))
       report.add(tet_name(t) + " pokes out of its leaf's box");
   };
-  const auto nodes = bvh_.nodes();
   for (std::size_t n = 0; n < nodes.size(); ++n) {
     const BvhNode& node = nodes[n];
     if (!node.leaf()) {
