@@ -52,7 +52,6 @@ void Stepper::resize(const SpringModel& model) {
   const std::size_t n = model.num_particles();
   if (dv_.size() != n) restart_warm_start(n);  // a new model: no warm start
   for (auto* v : {&f_, &saved_x_, &saved_v_, &residual_, &dv_change_, &dv_change_before_}) v->resize(n);
-  if (acc_.size() != n) acc_.assign(n, Vec3::Zero());
 }
 
 StepReport Stepper::step(const SpringModel& model, const Environment& env, const IntegratorDef& def,
@@ -68,18 +67,18 @@ StepReport Stepper::step(const SpringModel& model, const Environment& env, const
   const double h = dt / substeps;
   const bool contacts = env.floor.has_value() || (env.tool.has_value() && env.tool->radius > 0);
   const bool one_pass = def.kind == IntegratorKind::kSymplecticEuler && springs_in_run_order(model);
-  if (one_pass) run_pairs_.fill(model);
-  for (int k = 0; k < substeps; ++k) {
-    if (one_pass) {  // contacts resolved in the same pass
-      symplectic_substep(model, run_pairs_, env, contacts, h, state, acc_);
-      continue;
+  if (one_pass) {  // contacts resolved in the same pass
+    run_lanes_.fill(model);
+    symplectic_substeps(model, run_lanes_, env, contacts, h, substeps, state, pass_state_);
+  } else {
+    for (int k = 0; k < substeps; ++k) {
+      if (def.kind == IntegratorKind::kSymplecticEuler) {
+        substep_symplectic(model, env, state, h);
+      } else {
+        report.cg_iterations += substep_implicit(model, env, def, state, h, report.cg_residual);
+      }
+      if (contacts) apply_contacts(model, env, state);
     }
-    if (def.kind == IntegratorKind::kSymplecticEuler) {
-      substep_symplectic(model, env, state, h);
-    } else {
-      report.cg_iterations += substep_implicit(model, env, def, state, h, report.cg_residual);
-    }
-    if (contacts) apply_contacts(model, env, state);
   }
 
   if (!state_is_sane(state, def.max_speed)) {

@@ -90,9 +90,8 @@ class Stepper {
   // that would have predicted the last solution best (least squares),
   // clamped to [0, 2] and [-1, 1] (linear: 1, 0; quadratic: 2, -1).
   double extrapolation_ = 1.0, extrapolation2_ = 0.0;
-  // (n_particles) the one-pass explicit sub-step's reactions, all zero between sub-steps.
-  std::vector<Vec3> acc_;
-  RunPairs run_pairs_;  // the model's springs in pairs for the one-pass sub-step
+  RunLanes run_lanes_;     // the model's springs in lanes for the one-pass sub-steps
+  PassState pass_state_;   // their state in slots and scratch
   SpringSystem system_;  // the implicit step's linear system and its solvers
 };
 

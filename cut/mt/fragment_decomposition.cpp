@@ -37,7 +37,13 @@ Decomposition decompose_fragment(Mt& mt, FragId f, DecompositionScratch& s) {
   std::iota(s.parent.begin(), s.parent.end(), 0);
   s.touched.clear();
   std::size_t components = n;  // less one per union
+  // The tets' vertex records are scattered over the MT's arrays; the pass
+  // waits on them (and mispredicts its branches), so the record kAhead
+  // tets on is fetched early: DAG update 0.03 ms less on Table 1's row 5
+  // (1.21-1.26 -> 1.18-1.21 ms, alternated).
+  constexpr std::size_t kAhead = 8;
   for (std::size_t i = 0; i < n; ++i) {
+    if (i + kAhead < n) __builtin_prefetch(&mt.tet(tet_at(i + kAhead)));
     auto root = static_cast<std::int32_t>(i);
     for (engine::VertId v : mt.tet(tet_at(i))) {
       std::int32_t& owner = s.vertex_owner[v.index()];
