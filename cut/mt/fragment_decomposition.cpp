@@ -87,9 +87,6 @@ Decomposition decompose_fragment(Mt& mt, FragId f, DecompositionScratch& s) {
       return out;
     }
 
-  // Adding fragments and moving tets edit the MT's lists: take the ids first.
-  s.tets.assign(created.begin(), created.end());
-  s.tets.insert(s.tets.end(), replaced.begin(), replaced.end());
   out.outcome = DecomposeOutcome::kSplit;
   out.parts.push_back(f);
   for (std::size_t g = 1; g < k; ++g) {
@@ -97,14 +94,7 @@ Decomposition decompose_fragment(Mt& mt, FragId f, DecompositionScratch& s) {
     mt.reserve_fragment(out.parts[g], static_cast<std::size_t>(s.created_count[g]),
                         static_cast<std::size_t>(s.replaced_count[g]));
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto g = static_cast<std::size_t>(s.group[i]);
-    if (g == 0) continue;
-    if (i < n_created)
-      mt.set_birth(s.tets[i], out.parts[g]);
-    else
-      mt.set_death(s.tets[i], out.parts[g]);
-  }
+  mt.move_groups(f, out.parts, std::span<const std::int32_t>(s.group.data(), n));
   return out;
 }
 

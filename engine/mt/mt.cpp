@@ -156,6 +156,35 @@ void Mt::set_death(TetId t, FragId f) {
   ++revision_;
 }
 
+void Mt::move_groups(FragId f, std::span<const FragId> parts, std::span<const std::int32_t> group) {
+  assert(!parts.empty() && parts[0] == f);
+  assert(group.size() == created(f).size() + replaced(f).size());
+  const auto move = [&](std::vector<std::vector<TetId>>& lists, std::vector<FragId>& of,
+                        std::vector<std::int32_t>& slots, std::span<const std::int32_t> to) {
+    std::vector<TetId>& list = lists[f.index()];  // the parts' lists are others: pushes leave it be
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const TetId t = list[i];
+      const auto g = static_cast<std::size_t>(to[i]);
+      std::vector<TetId>& into = g == 0 ? list : lists[parts[g].index()];
+      const std::size_t at = g == 0 ? kept++ : into.size();
+      if (g == 0) {
+        list[at] = t;
+      } else {
+        into.push_back(t);
+        of[t.index()] = parts[g];
+      }
+      slots[t.index()] = static_cast<std::int32_t>(at);
+    }
+    list.resize(kept);
+  };
+  const std::size_t n_created = created(f).size();
+  move(frag_created_, tet_birth_, tet_birth_slot_, group.first(n_created));
+  move(frag_replaced_, tet_death_, tet_death_slot_, group.subspan(n_created));
+  ++revision_;
+  for (FragId p : parts) frag_created_revision_[p.index()] = revision_;
+}
+
 void Mt::reserve_fragment(FragId f, std::size_t created, std::size_t replaced) {
   frag_created_[f.index()].reserve(created);
   frag_replaced_[f.index()].reserve(replaced);

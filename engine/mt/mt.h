@@ -92,6 +92,11 @@ class Mt {
   // Moves t to another creating / replacing fragment (re-attaching an arc).
   void set_birth(TetId t, FragId f);
   void set_death(TetId t, FragId f);
+  // Splits f's arcs among `parts` (parts[0] == f): the i-th tet of
+  // created(f), then of replaced(f), moves to parts[group[i]]. One pass per
+  // list, where set_birth / set_death would swap each tet out one by one;
+  // the tets f keeps stay in their order.
+  void move_groups(FragId f, std::span<const FragId> parts, std::span<const std::int32_t> group);
   void set_boundary_mask(TetId t, FaceMask mask) {
     tet_boundary_[t.index()] = mask;
     ++revision_;

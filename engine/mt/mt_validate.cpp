@@ -130,6 +130,19 @@ ValidationReport Mt::validate() const {
   ValidationReport report;
   check_tets(*this, report);
   if (!report.ok()) return report;
+  // Each live tet's slots say where its fragments list it (kill_tet,
+  // set_birth and move_groups find it there).
+  for (std::size_t i = 0; i < num_tets(); ++i) {
+    const TetId t(static_cast<std::int32_t>(i));
+    if (!alive(t)) continue;
+    const auto listed = [t](std::span<const TetId> list, std::int32_t slot) {
+      return slot >= 0 && static_cast<std::size_t>(slot) < list.size() && list[static_cast<std::size_t>(slot)] == t;
+    };
+    if (!listed(created(birth(t)), tet_birth_slot_[i])) report.add("tet " + str(t.value) + " has a wrong birth slot");
+    if (death(t).valid() ? !listed(replaced(death(t)), tet_death_slot_[i]) : tet_death_slot_[i] != -1)
+      report.add("tet " + str(t.value) + " has a wrong death slot");
+  }
+  if (!report.ok()) return report;
   check_dag(*this, report);
   if (!report.ok()) return report;
   check_fragments(*this, report);
