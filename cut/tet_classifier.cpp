@@ -326,6 +326,7 @@ CutClassifier::EdgeInfo& CutClassifier::edge(VertId a, VertId b) const {
   if (fresh) {
     it->second.t = raw_parameter(a, b);
     it->second.number = static_cast<std::int32_t>(edges_.size() - 1);
+    edge_t_.push_back(it->second.t);
   }
   return it->second;
 }
@@ -335,7 +336,7 @@ double CutClassifier::crossing_parameter(VertId a, VertId b) const {
   // cut point stays `snap` away from the edge's ends: snapping makes that so
   // for the ends on the cut; an end kept off it, or sided by its neighbours
   // while on the plane, keeps the point away this way.
-  return std::clamp(edge(a, b).t, snap_, 1 - snap_);
+  return crossing_parameter_of(edge(a, b).number);
 }
 
 bool CutClassifier::crossing_covered(VertId a, VertId b) const { return covered(edge(a, b), a, b); }

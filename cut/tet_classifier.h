@@ -161,7 +161,10 @@ class CutClassifier {
   // share their edges (Table 1's cuts and the stress scenario's meet 0.4 to
   // 0.9 per candidate), so the edge table is not rehashed again and again as
   // it fills (Table 1's largest cut meets thousands).
-  void expect_candidates(std::size_t candidates) { edges_.reserve(candidates); }
+  void expect_candidates(std::size_t candidates) {
+    edges_.reserve(candidates);
+    edge_t_.reserve(candidates);
+  }
   // Phase 1. Declares a tet that may be cut; returns false (and forgets it)
   // when all its vertices are strictly on one side of the plane.
   bool add_candidate(const Tet& tet);
@@ -190,6 +193,10 @@ class CutClassifier {
   // Crossing of the edge (a, b): parameter from the lower id, and whether the
   // polygon crosses it (exact; cached). Only for edges that straddle.
   double crossing_parameter(VertId a, VertId b) const;
+  // The same for the edge configure numbered `number` (no look-up by ends).
+  double crossing_parameter_of(std::int32_t number) const {
+    return std::clamp(edge_t_[static_cast<std::size_t>(number)], snap_, 1 - snap_);
+  }
   bool crossing_covered(VertId a, VertId b) const;
 
   TetConfig configure(const Tet& tet) const;
@@ -280,6 +287,7 @@ class CutClassifier {
   std::unique_ptr<Scratch> own_scratch_;  // when none was given
   Scratch* scratch_;                      // info: (>= n_vertices) entries
   mutable absl::flat_hash_map<std::uint64_t, EdgeInfo> edges_;  // straddling edges met so far
+  mutable std::vector<double> edge_t_;  // (edges_) each numbered edge's EdgeInfo::t, by number
   std::vector<VertId> touched_;            // vertices of candidates
   std::vector<VertId> new_on_;             // put on since take_new_on_vertices()
   std::vector<VertId> on_vertices_;

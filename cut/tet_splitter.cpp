@@ -74,6 +74,19 @@ PointKey point_key(const Tet& tet, Label label) {
   return key;
 }
 
+PointSource edge_point_source(const Tet& tet, int edge, double t, std::span<const Vec3> positions) {
+  const VertId lo = std::min(tet[kTetEdges[edge][0]], tet[kTetEdges[edge][1]]);
+  const VertId hi = std::max(tet[kTetEdges[edge][0]], tet[kTetEdges[edge][1]]);
+  PointSource s;
+  const Vec3& plo = positions[lo.index()];
+  s.position = plo + t * (positions[hi.index()] - plo);
+  s.parents[0] = lo;
+  s.parents[1] = hi;
+  s.weights[0] = 1 - t;
+  s.weights[1] = t;
+  return s;
+}
+
 PointSource point_source(const Tet& tet, Label label, const CutClassifier& classifier, const SplitRecipe& recipe) {
   const auto positions = classifier.positions();
   const int i = label_index(label);
@@ -87,14 +100,7 @@ PointSource point_source(const Tet& tet, Label label, const CutClassifier& class
     case LabelKind::kEdge: {
       const VertId lo = std::min(tet[kTetEdges[i][0]], tet[kTetEdges[i][1]]);
       const VertId hi = std::max(tet[kTetEdges[i][0]], tet[kTetEdges[i][1]]);
-      const double t = classifier.crossing_parameter(lo, hi);
-      const Vec3& plo = positions[lo.index()];
-      s.position = plo + t * (positions[hi.index()] - plo);
-      s.parents[0] = lo;
-      s.parents[1] = hi;
-      s.weights[0] = 1 - t;
-      s.weights[1] = t;
-      return s;
+      return edge_point_source(tet, i, classifier.crossing_parameter(lo, hi), positions);
     }
     case LabelKind::kFace: {
       const auto face = sorted_face(tet, i);

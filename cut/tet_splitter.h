@@ -11,6 +11,7 @@
 // compute them from the same bits, so they get the same vertices.
 
 #include <array>
+#include <span>
 #include <vector>
 
 #include "cut/split_table.h"
@@ -23,6 +24,9 @@ namespace mtcut::cut {
 PointKey point_key(const Tet& tet, Label label);
 // Where that point is. `recipe` is used for the 1:17 centre only.
 PointSource point_source(const Tet& tet, Label label, const CutClassifier& classifier, const SplitRecipe& recipe);
+// point_source of the point on local edge `edge` of `tet` at parameter t
+// from its lower id (the classifier's crossing_parameter).
+PointSource edge_point_source(const Tet& tet, int edge, double t, std::span<const Vec3> positions);
 
 // The split of one tet, resolved to vertex ids by `factory`; the tets are
 // appended to `out`. `config` must be classifier.configure(tet) and cut. Returns the case.

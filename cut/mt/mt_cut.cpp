@@ -330,8 +330,12 @@ void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config,
         const auto source = [&] { return point_source(tet, l, classifier, recipe); };
         if (label_kind(l) == LabelKind::kVertex && label_side(l) != LabelSide::kNeg)
           id_of[l] = tet[label_index(l)].value;  // the vertex itself
-        else if (label_kind(l) == LabelKind::kEdge && edge_numbers[label_index(l)] >= 0)
-          id_of[l] = edge_point_id(edge_numbers[label_index(l)], tet, l, source).value;
+        else if (const std::int32_t edge = label_kind(l) == LabelKind::kEdge ? edge_numbers[label_index(l)] : -1;
+                 edge >= 0)
+          id_of[l] = edge_point_id(edge, tet, l, [&] {
+                       return edge_point_source(tet, label_index(l), classifier.crossing_parameter_of(edge),
+                                                classifier.positions());
+                     }).value;
         else
           id_of[l] = point_id(point_key(tet, l), source).value;
       }
