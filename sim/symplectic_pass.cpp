@@ -174,7 +174,10 @@ void symplectic_substeps(const SpringModel& model, const RunLanes& lanes, const 
   const std::size_t n = model.num_particles();
   load_slots(state.x, scratch.x);
   load_slots(state.v, scratch.v);
-  if (scratch.acc.size() != n) scratch.acc.assign(n, Slot4{Lanes4{0, 0, 0, 0}});
+  // Zero at every call, not only the first: a step that went NaN leaves NaN
+  // here (a pad lane's reaction lands on its own particle after its turn),
+  // and the next step, from the state the guard restored, must not read it.
+  scratch.acc.assign(n, Slot4{Lanes4{0, 0, 0, 0}});
   for (int k = 0; k < substeps; ++k) {
     if (!model.tet_particles.empty()) {  // from x at the sub-step's start, like the springs
       store_slots(scratch.x, state.x);

@@ -71,7 +71,7 @@ struct RunLanes {
 // The sub-steps' state in slots, and their scratch.
 struct PassState {
   std::vector<Slot4> x, v;   // (n_particles)
-  std::vector<Slot4> acc;    // (n_particles) reactions handed forward, all zero between sub-steps
+  std::vector<Slot4> acc;    // (n_particles) reactions handed forward: zeroed per call, zero between sub-steps
   std::vector<Vec3> volume;  // (n_particles) the volume terms' forces (models with them)
 };
 
