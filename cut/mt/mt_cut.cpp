@@ -69,6 +69,12 @@ void sort_unique(std::vector<Id>& ids, std::vector<std::uint64_t>& bits) {
   }
 }
 
+// Room for `extra` more entries in v, growing it geometrically.
+template <class T>
+void reserve_more(std::vector<T>& v, std::size_t extra) {
+  if (v.size() + extra > v.capacity()) v.reserve(std::max(v.size() + extra, 2 * v.capacity()));
+}
+
 // The order of new vertex ids (number_points_by_key sorts packed keys in it).
 [[maybe_unused]] bool key_less(const PointKey& a, const PointKey& b) {
   return std::tie(a.kind, a.side, a.ids) < std::tie(b.kind, b.side, b.ids);
@@ -294,16 +300,16 @@ void MtCut::number_points_by_key() {
   for (std::size_t i = 0; i < n; ++i) order.push_back(pack(points_[i].key, i));
   std::vector<Packed> scratch;
   engine::radix_sort<3>(order, scratch, [](const Packed& p) { return std::array{p.kind_side, p.ids01, p.ids23}; });
+  // points_ stays in scan order (a point is ~100 bytes): add_vertices
+  // reads it in key order through point_order_.
   std::vector<std::int32_t> rank(n);
-  std::vector<NewPoint> sorted;
-  sorted.reserve(n);
+  point_order_.resize(n);
   for (std::size_t r = 0; r < n; ++r) {
     const auto i = static_cast<std::size_t>(order[r].index);
     assert(r == 0 || key_less(points_[static_cast<std::size_t>(order[r - 1].index)].key, points_[i].key));
     rank[i] = static_cast<std::int32_t>(r);
-    sorted.push_back(points_[i]);
+    point_order_[r] = order[r].index;
   }
-  points_ = std::move(sorted);
   const auto first = static_cast<std::int32_t>(first_vertex_);
   for (Tet& piece : piece_tets_)
     for (VertId& v : piece)
@@ -367,8 +373,14 @@ void MtCut::add_vertices(Mt& mt, MtChangeReport& report) {
   if (mt.num_vertices() != first_vertex_)
     throw std::logic_error("MtCut: MT vertices were added between the start of the cut and its first job");
   mt.reserve(mt.num_vertices() + points_.size(), mt.num_tets() + new_tets_ + pending_.size());
-  report.made_vertices.reserve(report.made_vertices.size() + points_.size());
-  for (const auto& [key, source] : points_) {
+  // The report's lists grow by what this cut makes, known now: once, not
+  // by doublings over tens of thousands of entries.
+  // (Geometrically, should a report gather many cuts.)
+  reserve_more(report.made_vertices, points_.size());
+  reserve_more(report.made_tets, new_tets_ + pending_.size());
+  reserve_more(report.replaced, pending_.size());
+  for (const std::int32_t index : point_order_) {
+    const auto& [key, source] = points_[static_cast<std::size_t>(index)];
     Vec3 rest = Vec3::Zero();
     for (int i = 0; i < 4; ++i)
       if (source.parents[i].valid()) rest += source.weights[i] * mt.position(source.parents[i]);

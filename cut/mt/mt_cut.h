@@ -143,7 +143,7 @@ class MtCut {
                      const std::array<std::int32_t, 6>& edge_numbers, const CutClassifier& classifier,
                      SplitTable& table);
   void resolve_relabel(Pending& p, const Tet& tet, const CutClassifier& classifier);
-  // Renumbers the new points in key order (in points_ and piece_tets_).
+  // Renumbers the new points in key order (point_order_, and the ids in piece_tets_).
   void number_points_by_key();
   std::size_t job_of(FragId f) const;
   // Index in pending_ of tet t, -1 when t is not pending (the workspace's
@@ -161,7 +161,8 @@ class MtCut {
   std::unique_ptr<MtCutWorkspace> own_workspace_;  // when none was given
   MtCutWorkspace* workspace_;
   std::size_t first_vertex_ = 0;  // id of the first new vertex (the MT's vertex count at start)
-  std::vector<NewPoint> points_;  // new points, in id (key) order
+  std::vector<NewPoint> points_;  // new points, in the order the scan met them
+  std::vector<std::int32_t> point_order_;  // indices in points_ in id (key) order
   absl::flat_hash_map<PointKey, std::int32_t, PointKeyHash> point_index_;  // key -> index in points_
   // Points on straddling edges (most of them), index in points_ by 3 x the
   // classifier's edge number + the label's side; -1 = not met yet.
