@@ -90,8 +90,8 @@ class Stepper {
   // that would have predicted the last solution best (least squares),
   // clamped to [0, 2] and [-1, 1] (linear: 1, 0; quadratic: 2, -1).
   double extrapolation_ = 1.0, extrapolation2_ = 0.0;
-  RunLanes run_lanes_;     // the model's springs in lanes for the one-pass sub-steps
-  PassState pass_state_;   // their state in slots and scratch
+  RunLanes run_lanes_;  // the model's springs in lanes for the one-pass sub-steps
+  PassState pass_state_;  // their state in slots and scratch
   SpringSystem system_;  // the implicit step's linear system and its solvers
 };
 
