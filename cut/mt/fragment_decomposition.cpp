@@ -39,8 +39,8 @@ Decomposition decompose_fragment(Mt& mt, FragId f, DecompositionScratch& s) {
   std::size_t components = n;  // less one per union
   // The tets' vertex records are scattered over the MT's arrays; the pass
   // waits on them (and mispredicts its branches), so the record kAhead
-  // tets on is fetched early: DAG update 0.03 ms less on Table 1's row 5
-  // (1.21-1.26 -> 1.18-1.21 ms, alternated).
+  // tets on is fetched early: Table 1's row 5, DAG update 1.20-1.24 ->
+  // 1.18-1.21 ms (bench, three alternated runs each).
   constexpr std::size_t kAhead = 8;
   for (std::size_t i = 0; i < n; ++i) {
     if (i + kAhead < n) __builtin_prefetch(&mt.tet(tet_at(i + kAhead)));
