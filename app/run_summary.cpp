@@ -138,7 +138,12 @@ void print_run_paragraph(std::ostream& out, const nlohmann::ordered_json& s) {
     << (s["pieces"].get<int>() == 1 ? " piece" : " pieces") << piece_places(s) << "; a frame took " << fixed(s["frame_ms_mean"], 2)
     << " ms on average (p99 " << fixed(s["frame_ms_p99"], 2) << " ms), cutting " << fixed(s["cut_ms_mean"], 3)
     << " ms (max " << fixed(s["cut_ms_max"], 3) << " ms). " << s["nan_events"].get<std::uint64_t>()
-    << " NaN events; the MT, frontier and springs are " << (s["valid"].get<bool>() ? "valid" : "NOT valid")
+    << " NaN events";
+  if (s["nan_events"].get<std::uint64_t>() > 0)
+    p << " (steps refused for a NaN or a runaway speed: the state before each was kept, so the tissue stood still"
+         " in those frames; an explicit step too long for the smallest elements, which a cut can make, does this:"
+         " raise [integrator] substeps or use the implicit integrator)";
+  p << "; the MT, frontier and springs are " << (s["valid"].get<bool>() ? "valid" : "NOT valid")
     << "; state hash " << s["state_hash"].get<std::string>() << ".";
   if (s.contains("outputs")) {
     const auto& o = s["outputs"];

@@ -37,6 +37,22 @@ TEST_F(RunCommand, DefaultScenarioRunsValidAndWritesItsSummary) {
   EXPECT_EQ(nlohmann::json::parse(read_text(path("out/summary.json"))), out);
 }
 
+// Refused steps are counted, and the paragraph says what they mean and what
+// to change; a run without any says nothing of it.
+TEST_F(RunCommand, RefusedStepsAreExplainedInTheParagraph) {
+  const std::string unstable = write("unstable.toml", variant("kind = \"implicit\"", "kind = \"symplectic\""));
+  const CommandResult bad = run_mtcut("run " + quoted(unstable) + " --frames 10 --out " + quoted(path("bad")));
+  ASSERT_EQ(bad.exit_code, 0) << bad.err;
+  EXPECT_EQ(bad.out.find(" 0 NaN events"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("steps refused"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("raise [integrator] substeps"), std::string::npos) << bad.out;
+  const CommandResult good = run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) +
+                                       " --frames 3 --out " + quoted(path("good")));
+  ASSERT_EQ(good.exit_code, 0) << good.err;
+  EXPECT_NE(good.out.find(" 0 NaN events;"), std::string::npos) << good.out;
+  EXPECT_EQ(good.out.find("steps refused"), std::string::npos) << good.out;
+}
+
 TEST_F(RunCommand, SameScenarioTwiceGivesTheSameStateHash) {
   const std::string args = "run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 40 --json" +
                            " --out " + quoted(path("out"));
