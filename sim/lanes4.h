@@ -15,9 +15,10 @@ using LaneIndex4 = std::int64_t __attribute__((vector_size(32)));  // shuffle ma
 
 // A particle's (x, y, z, 0) in one aligned 32-byte slot. A struct, so that
 // it can be a std::vector's element (the vector type's attribute would be
-// dropped from a template argument).
-struct alignas(32) Slot4 {
+// dropped from a template argument); it takes Lanes4's alignment.
+struct Slot4 {
   Lanes4 p;
 };
+static_assert(alignof(Slot4) == 32 && sizeof(Slot4) == 32);
 
 }  // namespace mtcut::sim

@@ -42,9 +42,10 @@ bool springs_in_run_order(const SpringModel& model);
 
 // Four springs of a run, lane by lane: k (N/m), k L (N), c (N s/m); 0 in a
 // pad lane, whose other end is the run's own particle (it adds exactly 0).
-struct alignas(32) SpringQuad {
+struct SpringQuad {
   Lanes4 stiffness, stiffness_rest, damping;
 };
+static_assert(alignof(SpringQuad) == 32);
 
 // The last one or two springs of a run, as SpringQuad.
 struct SpringPair {

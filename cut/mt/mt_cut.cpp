@@ -15,6 +15,7 @@
 #include "cut/recipe_faces.h"
 #include "cut/tet_splitter.h"
 #include "engine/radix_sort.h"
+#include "engine/reserve_geometric.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {
@@ -67,12 +68,6 @@ void sort_unique(std::vector<Id>& ids, std::vector<std::uint64_t>& bits) {
       ids.push_back(Id(static_cast<std::int32_t>(64 * w + static_cast<std::size_t>(std::countr_zero(word)))));
     bits[w] = 0;
   }
-}
-
-// Room for `extra` more entries in v, growing it geometrically.
-template <class T>
-void reserve_more(std::vector<T>& v, std::size_t extra) {
-  if (v.size() + extra > v.capacity()) v.reserve(std::max(v.size() + extra, 2 * v.capacity()));
 }
 
 // The order of new vertex ids (number_points_by_key sorts packed keys in it).
@@ -374,11 +369,11 @@ void MtCut::add_vertices(Mt& mt, MtChangeReport& report) {
     throw std::logic_error("MtCut: MT vertices were added between the start of the cut and its first job");
   mt.reserve(mt.num_vertices() + points_.size(), mt.num_tets() + new_tets_ + pending_.size());
   // The report's lists grow by what this cut makes, known now: once, not
-  // by doublings over tens of thousands of entries.
-  // (Geometrically, should a report gather many cuts.)
-  reserve_more(report.made_vertices, points_.size());
-  reserve_more(report.made_tets, new_tets_ + pending_.size());
-  reserve_more(report.replaced, pending_.size());
+  // by doublings over tens of thousands of entries (geometrically, should a
+  // report gather many cuts).
+  engine::reserve_geometric(report.made_vertices, report.made_vertices.size() + points_.size());
+  engine::reserve_geometric(report.made_tets, report.made_tets.size() + new_tets_ + pending_.size());
+  engine::reserve_geometric(report.replaced, report.replaced.size() + pending_.size());
   for (const std::int32_t index : point_order_) {
     const auto& [key, source] = points_[static_cast<std::size_t>(index)];
     Vec3 rest = Vec3::Zero();

@@ -5,6 +5,7 @@
 #include <cassert>
 
 #include "engine/mt/tet_error.h"
+#include "engine/reserve_geometric.h"
 #include "engine/tet_adjacency.h"
 #include "engine/tet_geometry.h"
 
@@ -53,11 +54,8 @@ VertId Mt::add_vertex(const Vec3& rest_position) {
 }
 
 void Mt::reserve(std::size_t vertices, std::size_t tets) {
-  // Geometric growth: a cut reserves what it adds, and reserving exactly that
-  // would copy every array once per cut.
-  const auto grow = [](auto& v, std::size_t n) {
-    if (n > v.capacity()) v.reserve(std::max(n, v.capacity() + v.capacity() / 2));
-  };
+  // Geometric growth: a cut reserves what it adds (reserve_geometric.h).
+  const auto grow = [](auto& v, std::size_t n) { reserve_geometric(v, n); };
   grow(positions_, vertices);
   grow(tet_verts_, tets);
   grow(tet_birth_, tets);
