@@ -57,6 +57,14 @@ struct SplitRecipe {
   std::vector<std::array<Label, 4>> tets;
   std::vector<Label> centre_of;  // the centre, when used (1:17, some LUT splits): centroid of these (unsided) points
   std::vector<PieceFaces> faces;  // (tets) filled by make_recipe once the tets are oriented
+  // The distinct labels of `tets` in the order the tets first use them, and
+  // each tet's corners as indexes into `labels` (index_labels): a split
+  // finds each label's vertex once, then fills its pieces' corners by index.
+  std::vector<Label> labels;
+  std::vector<std::array<std::uint8_t, 4>> corner_slots;  // (tets)
 };
+
+// Fills recipe.labels and recipe.corner_slots from recipe.tets.
+void index_labels(SplitRecipe& recipe);
 
 }  // namespace mtcut::cut

@@ -1,5 +1,6 @@
 #include "cut/split_recipe.h"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -56,6 +57,22 @@ void orient_recipe(const TetConfig& config, const CutTrace& trace, SplitRecipe& 
                            std::to_string(sum / whole) + " of it)");
 }
 
+void index_labels(SplitRecipe& recipe) {
+  std::array<std::int16_t, kLabelCount> slot;
+  slot.fill(-1);
+  recipe.labels.clear();
+  recipe.corner_slots.resize(recipe.tets.size());
+  for (std::size_t j = 0; j < recipe.tets.size(); ++j)
+    for (int c = 0; c < 4; ++c) {
+      const Label l = recipe.tets[j][c];
+      if (slot[l] < 0) {
+        slot[l] = static_cast<std::int16_t>(recipe.labels.size());
+        recipe.labels.push_back(l);
+      }
+      recipe.corner_slots[j][c] = static_cast<std::uint8_t>(slot[l]);
+    }
+}
+
 SplitRecipe make_recipe(const TetConfig& config, SplitScheme scheme) {
   TraceOptions options;
   options.split_face_nodes = scheme == SplitScheme::kBielser17;
@@ -64,6 +81,7 @@ SplitRecipe make_recipe(const TetConfig& config, SplitScheme scheme) {
       scheme == SplitScheme::kLut ? generate_lut_split(config) : generate_bielser17_split(config);
   orient_recipe(config, trace, recipe);
   recipe.faces = recipe_piece_faces(recipe);
+  index_labels(recipe);
   return recipe;
 }
 

@@ -27,6 +27,7 @@ bool baked_recipe(std::uint32_t key, SplitRecipe& recipe) {
   recipe.faces.assign(faces.begin(), faces.end());
   const auto centre = lut.centres.subspan(it->centre_first, it->centre_count);
   recipe.centre_of.assign(centre.begin(), centre.end());
+  index_labels(recipe);
   return true;
 }
 

@@ -316,34 +316,29 @@ void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config,
                           const std::array<std::int32_t, 6>& edge_numbers, const CutClassifier& classifier,
                           SplitTable& table) {
   const SplitRecipe& recipe = table.recipe(config);
+  assert(recipe.corner_slots.size() == recipe.tets.size());
   p.recipe = &recipe;
   p.first = static_cast<std::uint32_t>(piece_tets_.size());
   p.count = static_cast<std::uint8_t>(recipe.tets.size());
-  // Each label once (it is a corner of several pieces): -1 = not met yet.
+  // Each label's vertex once (it is a corner of several pieces); raw ids,
+  // not VertIds, which would each be initialised.
   std::array<std::int32_t, kLabelCount> id_of;
-  for (const auto& t : recipe.tets)
-    for (Label l : t) id_of[l] = -1;
-  for (const auto& t : recipe.tets) {
-    Tet piece;
-    for (int c = 0; c < 4; ++c) {
-      const Label l = t[c];
-      if (id_of[l] < 0) {
-        const auto source = [&] { return point_source(tet, l, classifier, recipe); };
-        if (label_kind(l) == LabelKind::kVertex && label_side(l) != LabelSide::kNeg)
-          id_of[l] = tet[label_index(l)].value;  // the vertex itself
-        else if (const std::int32_t edge = label_kind(l) == LabelKind::kEdge ? edge_numbers[label_index(l)] : -1;
-                 edge >= 0)
-          id_of[l] = edge_point_id(edge, tet, l, [&] {
-                       return edge_point_source(tet, label_index(l), classifier.crossing_parameter_of(edge),
-                                                classifier.positions());
-                     }).value;
-        else
-          id_of[l] = point_id(point_key(tet, l), source).value;
-      }
-      piece[c] = VertId(id_of[l]);
+  for (std::size_t k = 0; k < recipe.labels.size(); ++k) {
+    const Label l = recipe.labels[k];
+    if (label_kind(l) == LabelKind::kVertex && label_side(l) != LabelSide::kNeg) {
+      id_of[k] = tet[label_index(l)].value;  // the vertex itself
+    } else if (const std::int32_t edge = label_kind(l) == LabelKind::kEdge ? edge_numbers[label_index(l)] : -1;
+               edge >= 0) {
+      id_of[k] = edge_point_id(edge, tet, l, [&] {
+        return edge_point_source(tet, label_index(l), classifier.crossing_parameter_of(edge), classifier.positions());
+      }).value;
+    } else {
+      id_of[k] = point_id(point_key(tet, l), [&] { return point_source(tet, l, classifier, recipe); }).value;
     }
-    piece_tets_.push_back(piece);
   }
+  for (const auto& slots : recipe.corner_slots)
+    piece_tets_.push_back(
+        {VertId(id_of[slots[0]]), VertId(id_of[slots[1]]), VertId(id_of[slots[2]]), VertId(id_of[slots[3]])});
   new_tets_ += recipe.tets.size();
 }
 

@@ -164,6 +164,35 @@ TEST(SplitTable, IdOrderChangesTheLutOnlyWhereAFaceHasAQuad) {
   EXPECT_GT(checked, 100u);
 }
 
+// The label index a split resolves corners by (index_labels) names each
+// corner's own label, lists each label once, and is filled on every path a
+// recipe takes into the table: the baked LUT and the generated 1:17.
+TEST(SplitTable, LabelIndexNamesEveryCornerOnce) {
+  for (SplitScheme scheme : {SplitScheme::kLut, SplitScheme::kBielser17}) {
+    SplitTable table(scheme);
+    std::size_t checked = 0;
+    for (const TetConfig& c : all_cut_configs(1)) {
+      SCOPED_TRACE(describe(c));
+      const SplitRecipe& recipe = table.recipe(c);
+      ASSERT_EQ(recipe.corner_slots.size(), recipe.tets.size());
+      std::vector<Label> sorted = recipe.labels;
+      std::sort(sorted.begin(), sorted.end());
+      EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a label listed twice";
+      std::vector<std::uint8_t> used(recipe.labels.size(), 0);
+      for (std::size_t j = 0; j < recipe.tets.size(); ++j)
+        for (int c4 = 0; c4 < 4; ++c4) {
+          const std::size_t slot = recipe.corner_slots[j][c4];
+          ASSERT_LT(slot, recipe.labels.size());
+          EXPECT_EQ(recipe.labels[slot], recipe.tets[j][c4]);
+          used[slot] = 1;
+        }
+      EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0) << "a label no corner uses";
+      ++checked;
+    }
+    EXPECT_GT(checked, 100u);
+  }
+}
+
 TEST(SplitTable, SchemeNamesRoundTrip) {
   for (SplitScheme s : {SplitScheme::kLut, SplitScheme::kBielser17}) EXPECT_EQ(parse_scheme(scheme_name(s)), s);
   EXPECT_FALSE(parse_scheme("1:17").has_value());
