@@ -51,7 +51,7 @@ struct Decomposition {
 // Scratch reused between calls: nothing is allocated per fragment once warm.
 struct DecompositionScratch {
   std::vector<std::int32_t> vertex_owner;  // (n_vertices) first tet index holding the vertex, -1 none
-  std::vector<engine::VertId> touched;     // vertices to reset
+  std::vector<engine::VertId> touched;     // vertices to reset (a prefix; sized for four per tet)
   std::vector<std::int32_t> parent;        // union-find over created(f) then replaced(f)
   std::vector<std::int32_t> group;         // (tets) group of each root, then of each tet
   std::vector<std::int32_t> created_count, replaced_count;  // per group

@@ -408,7 +408,11 @@ void MtCut::process(Mt& mt, TetBvh& bvh, std::size_t job, MtChangeReport& report
   if (job_done_[job]) throw std::logic_error("MtCut::process: job already done");
   const FragId f = jobs_[job];
   const auto start = Clock::now();
-  if (!vertices_added_) add_vertices(mt, report);
+  if (!vertices_added_) {
+    add_vertices(mt, report);
+    // Every piece (and relabelled copy) joins the BVH: its arrays grow once.
+    bvh.reserve(mt.num_tets() + new_tets_ + pending_.size(), new_tets_ + pending_.size());
+  }
   // Step 2 for the tets f creates and, so that f sees its whole region
   // final, the pending tets it replaces (their own job will find them done).
   for (std::int32_t i : job_tets(job)) {

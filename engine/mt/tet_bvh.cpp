@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/mt/frontier.h"
+#include "engine/reserve_geometric.h"
 
 namespace mtcut::engine {
 
@@ -161,6 +162,13 @@ void TetBvh::append_to_leaf(std::size_t n, TetId t) {
   where_[t.index()] = -e - 2;
   ++indexed_;
   ++edits_;
+}
+
+void TetBvh::reserve(std::size_t tets, std::size_t insertions) {
+  reserve_geometric(where_, tets);
+  reserve_geometric(extra_tet_, extra_tet_.size() + insertions);
+  reserve_geometric(extra_next_, extra_next_.size() + insertions);
+  reserve_geometric(extra_leaf_, extra_leaf_.size() + insertions);
 }
 
 void TetBvh::replace(const Mt& mt, TetId old, std::span<const TetId> pieces) {

@@ -107,6 +107,9 @@ class TetBvh {
   void remove(TetId t);
   void insert(const Mt& mt, TetId t);
   void replace(const Mt& mt, TetId old, std::span<const TetId> pieces);
+  // Room for tet ids below `tets` and for `insertions` more inserted tets,
+  // so that a cut that knows what it adds grows each array once.
+  void reserve(std::size_t tets, std::size_t insertions);
 
   // The edits since the last rebuild outnumber half the indexed tets:
   // queries have slowed down enough that a rebuild pays for itself.

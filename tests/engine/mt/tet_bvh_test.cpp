@@ -139,6 +139,27 @@ TEST(TetBvh, FollowsReplacedTets) {
   }
 }
 
+// A cut reserves room for what it adds (TetBvh::reserve): the edits then
+// grow no array, and the index stays exact.
+TEST(TetBvh, ReservedRoomTakesTheEditsWithoutGrowing) {
+  Mt mt = test_mt("box");  // a copy to edit
+  TetBvh bvh(mt);
+  constexpr std::size_t kEdits = 200;  // four pieces each (split_at_centroid)
+  mt.reserve(mt.num_vertices() + kEdits, mt.num_tets() + 4 * kEdits);
+  bvh.reserve(mt.num_tets() + 4 * kEdits, 4 * kEdits);
+  const std::size_t bytes = bvh.bytes();
+  std::mt19937 rng(11);
+  for (std::size_t k = 0; k < kEdits; ++k) {
+    TetId t(static_cast<std::size_t>(rng() % mt.num_tets()));
+    while (!mt.alive(t)) t = TetId(static_cast<std::size_t>(rng() % mt.num_tets()));
+    bvh.replace(mt, t, split_at_centroid(mt, t));
+  }
+  ASSERT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
+  EXPECT_EQ(bvh.bytes(), bytes) << "an array grew past the reserved room";
+  EXPECT_EQ(bvh.size(), mt.num_live_tets());
+  for (const Vec3& p : random_points(mt, 150, 21)) ASSERT_EQ(bvh_containing(mt, bvh, p), brute_force_containing(mt, p));
+}
+
 TEST(TetBvh, ValidateFindsAnIndexThatMissedAnEdit) {
   Mt mt = test_mt("box");
   TetBvh bvh(mt);
