@@ -100,6 +100,7 @@ CutClassifier::CutClassifier(const CutPolygon& polygon, std::span<const Vec3> po
   if (scratch_->in_use) throw std::logic_error("CutClassifier: the scratch is in use by another classifier");
   scratch_->in_use = true;
   if (scratch_->info.size() < positions.size()) scratch_->info.resize(positions.size());
+  if (scratch_->code.size() < positions.size()) scratch_->code.resize(positions.size(), 0);
   if (continuation_) {
     // The stroke's front that lies on the polygon (to kMinSnap of its face,
     // as the leading edge put it) is split: the crack goes on from it.
@@ -128,10 +129,13 @@ engine::ValidationReport CutClassifier::Scratch::validate() const {
   if (!dirty.empty()) report.add("CutClassifier::Scratch: " + std::to_string(dirty.size()) + " entries listed dirty");
   for (std::size_t v = 0; v < info.size(); ++v)
     if (!(info[v] == VertexInfo{})) report.add("CutClassifier::Scratch: vertex " + std::to_string(v) + " not reset");
+  for (std::size_t v = 0; v < code.size(); ++v)
+    if (code[v] != 0) report.add("CutClassifier::Scratch: vertex " + std::to_string(v) + " left coded");
   return report;
 }
 
 CutClassifier::~CutClassifier() {
+  for (VertId v : touched_) scratch_->code[v.index()] = 0;
   for (VertId v : scratch_->dirty) scratch_->info[v.index()] = VertexInfo{};
   scratch_->dirty.clear();
   scratch_->in_use = false;
@@ -304,9 +308,13 @@ void CutClassifier::finalize() {
     }
     on_vertices_.push_back(v);
   }
+  // States are final: each candidate vertex's in a byte (state()).
+  for (VertId v : touched_)
+    scratch_->code[v.index()] =
+        static_cast<std::uint8_t>((1 + static_cast<int>(uncoded_state(v))) | (at(v).vetoed ? 4 : 0));
 }
 
-VertexState CutClassifier::state(VertId v) const {
+VertexState CutClassifier::uncoded_state(VertId v) const {
   const VertexInfo& info = at(v);
   if (finalized_ && info.on) return VertexState::kOnActive;
   if (info.crack_end) return VertexState::kOnInactive;
@@ -377,7 +385,7 @@ TetConfig CutClassifier::configure(const Tet& tet, std::array<std::int32_t, 6>& 
   TetConfig config;
   for (int i = 0; i < 4; ++i) {
     config.vertex[i] = state(tet[i]);
-    config.bent |= is_on(config.vertex[i]) || at(tet[i]).vetoed;
+    config.bent |= is_on(config.vertex[i]) || coded_vetoed(tet[i]);
     int rank = 0;
     for (int j = 0; j < 4; ++j) rank += tet[j] < tet[i];
     config.rank[i] = static_cast<std::uint8_t>(rank);

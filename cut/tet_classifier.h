@@ -131,6 +131,10 @@ class CutClassifier {
     friend class CutClassifier;
     std::vector<VertexInfo> info;  // pristine (default) except while a classifier writes
     std::vector<VertId> dirty;     // entries written by the live classifier
+    // After finalize, for the candidates' vertices: 1 + state | vetoed << 2
+    // (0 = not coded). A byte per vertex: the configuration of every
+    // candidate reads four, which the 48-byte records would scatter.
+    std::vector<std::uint8_t> code;
     bool in_use = false;
   };
 
@@ -181,7 +185,10 @@ class CutClassifier {
   // Phase 2: fixes the state of every vertex.
   void finalize();
 
-  VertexState state(VertId v) const;
+  VertexState state(VertId v) const {
+    const std::uint8_t code = scratch_->code[v.index()];
+    return code != 0 ? static_cast<VertexState>((code - 1) & 3) : uncoded_state(v);
+  }
   bool snapped(VertId v) const;                   // "on" only because of snapping
   bool vetoed(VertId v) const;          // kept off the cut (requested or found off the polygon)
   bool veto_requested(VertId v) const;  // by veto()
@@ -263,6 +270,11 @@ class CutClassifier {
     return info;
   }
   std::int8_t side_for_crossings(VertId v) const;
+  VertexState uncoded_state(VertId v) const;  // state() from the record (before finalize, or off the candidates)
+  bool coded_vetoed(VertId v) const {  // vetoed(), from the code when there is one
+    const std::uint8_t code = scratch_->code[v.index()];
+    return code != 0 ? (code >> 2 & 1) != 0 : at(v).vetoed;
+  }
   // side_for_crossings of each vertex; all strictly on one side.
   std::array<std::int8_t, 4> crossing_sides(const Tet& tet) const;
   static bool one_sided(const std::array<std::int8_t, 4>& sides);

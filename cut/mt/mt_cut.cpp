@@ -184,10 +184,16 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   sort_unique(jobs_, workspace_->id_bits);
   job_first_.assign(jobs_.size() + 1, 0);
   std::vector<std::uint32_t> job_index(pending_.size());
+  // Each fragment's job through the workspace's map (set, read, reset with
+  // nothing in between that can throw), not a binary search per tet.
+  std::vector<std::int32_t>& job_of_fragment = workspace_->job_of_fragment;
+  if (job_of_fragment.size() < mt.num_fragments()) job_of_fragment.resize(mt.num_fragments(), -1);
+  for (std::size_t j = 0; j < jobs_.size(); ++j) job_of_fragment[jobs_[j].index()] = static_cast<std::int32_t>(j);
   for (std::size_t i = 0; i < pending_.size(); ++i) {
-    job_index[i] = static_cast<std::uint32_t>(job_of(mt.birth(pending_[i].tet)));
+    job_index[i] = static_cast<std::uint32_t>(job_of_fragment[mt.birth(pending_[i].tet).index()]);
     ++job_first_[job_index[i] + 1];
   }
+  for (FragId f : jobs_) job_of_fragment[f.index()] = -1;
   for (std::size_t j = 0; j < jobs_.size(); ++j) job_first_[j + 1] += job_first_[j];
   job_tets_.resize(pending_.size());
   std::vector<std::uint32_t> fill(job_first_.begin(), job_first_.end() - 1);
@@ -235,12 +241,6 @@ void MtCut::add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, CutClas
     std::merge(found.begin(), found.end(), extra.begin(), extra.end(), std::back_inserter(merged));
     found.swap(merged);
   }
-}
-
-std::size_t MtCut::job_of(FragId f) const {
-  const auto it = std::lower_bound(jobs_.begin(), jobs_.end(), f);
-  assert(it != jobs_.end() && *it == f);
-  return static_cast<std::size_t>(it - jobs_.begin());
 }
 
 std::size_t MtCut::job_cost(const Mt& mt, std::size_t job) const {

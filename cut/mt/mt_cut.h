@@ -145,7 +145,6 @@ class MtCut {
   void resolve_relabel(Pending& p, const Tet& tet, const CutClassifier& classifier);
   // Renumbers the new points in key order (point_order_, and the ids in piece_tets_).
   void number_points_by_key();
-  std::size_t job_of(FragId f) const;
   // Index in pending_ of tet t, -1 when t is not pending (the workspace's
   // array, over the tets that existed when the cut started).
   std::int32_t pending_index(TetId t) const {

@@ -13,6 +13,8 @@ engine::ValidationReport MtCutWorkspace::validate() const {
       report.add("MtCutWorkspace: vertex " + std::to_string(v) + " left owned by the decomposition");
   for (std::size_t t = 0; t < pending_of.size(); ++t)
     if (pending_of[t] != -1) report.add("MtCutWorkspace: tet " + std::to_string(t) + " left marked pending");
+  for (std::size_t f = 0; f < job_of_fragment.size(); ++f)
+    if (job_of_fragment[f] != -1) report.add("MtCutWorkspace: fragment " + std::to_string(f) + " left mapped to a job");
   for (std::size_t w = 0; w < id_bits.size(); ++w)
     if (id_bits[w] != 0) report.add("MtCutWorkspace: id bits left set in word " + std::to_string(w));
   return report;

@@ -23,6 +23,7 @@ struct MtCutWorkspace {
   DecompositionScratch decomposition;  // the DAG update's
   std::vector<std::int32_t> pending_of;  // (>= n_tets) index among the cut's pending tets; all -1 between cuts
   std::vector<std::uint64_t> id_bits;  // (>= n_tets / 64) the search's sort of tet and fragment ids; all 0 between cuts
+  std::vector<std::int32_t> job_of_fragment;  // (>= n_fragments) the search's job of a fragment; all -1 between cuts
 
   // Handed back clean (between cuts): every entry pristine. O(n_vertices), for tests.
   engine::ValidationReport validate() const;
