@@ -388,8 +388,10 @@ void MtCut::change_tet(Mt& mt, TetBvh& bvh, Pending& p, MtChangeReport& report) 
   pieces_.clear();
   const std::span<const Tet> made(piece_tets_.data() + p.first, p.count);
   if (p.split) {
-    for (std::size_t j = 0; j < made.size(); ++j)
-      pieces_.push_back(mt.add_piece(made[j], old, piece_mask(p.recipe->faces[j], mask)));
+    piece_masks_.clear();
+    for (std::size_t j = 0; j < made.size(); ++j) piece_masks_.push_back(piece_mask(p.recipe->faces[j], mask));
+    const TetId first = mt.add_pieces(made, old, piece_masks_);
+    for (std::size_t j = 0; j < made.size(); ++j) pieces_.emplace_back(first.index() + j);
     ++report.counts.split_tets;
     report.counts.new_tets += made.size();
   } else {

@@ -177,6 +177,7 @@ class MtCut {
   std::size_t jobs_done_ = 0;
   double find_seconds_ = 0;
   std::vector<TetId> pieces_;                // scratch of change_tet
+  std::vector<engine::FaceMask> piece_masks_;  // scratch of change_tet
   std::vector<std::int32_t> from_parents_;   // scratch of process
 };
 

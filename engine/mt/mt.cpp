@@ -87,6 +87,34 @@ TetId Mt::add_piece(const Tet& verts, TetId whole, FaceMask boundary) {
   return append_tet(verts, birth(whole), death(whole), boundary, error(whole), true);
 }
 
+TetId Mt::add_pieces(std::span<const Tet> verts, TetId whole, std::span<const FaceMask> boundary) {
+  assert(alive(whole) && boundary.size() == verts.size());
+  const FragId birth = tet_birth_[whole.index()], death = tet_death_[whole.index()];
+  const float error = tet_error_[whole.index()];
+  const std::size_t first = tet_verts_.size(), n = verts.size();
+  tet_verts_.insert(tet_verts_.end(), verts.begin(), verts.end());
+  tet_error_.resize(first + n, error);
+  tet_error_inherited_.resize(first + n, 1);
+  tet_boundary_.insert(tet_boundary_.end(), boundary.begin(), boundary.end());
+  const auto append_to = [&](std::vector<TetId>& list, std::vector<std::int32_t>& slots) {
+    for (std::size_t i = 0; i < n; ++i) {
+      slots.push_back(static_cast<std::int32_t>(list.size()));
+      list.emplace_back(first + i);
+    }
+  };
+  tet_birth_.resize(first + n, birth);
+  append_to(frag_created_[birth.index()], tet_birth_slot_);
+  tet_death_.resize(first + n, death);
+  if (death.valid())
+    append_to(frag_replaced_[death.index()], tet_death_slot_);
+  else
+    tet_death_slot_.resize(first + n, -1);
+  live_tets_ += n;
+  ++revision_;
+  frag_created_revision_[birth.index()] = revision_;
+  return TetId(first);
+}
+
 TetId Mt::add_copy(const Mt& source, TetId t, const Tet& verts, FragId birth, FragId death) {
   return append_tet(verts, birth, death, source.boundary_mask(t), source.error(t), source.error_inherited(t));
 }

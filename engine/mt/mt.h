@@ -84,6 +84,9 @@ class Mt {
   // mesh, which a cut does not change. So a cut leaves every fragment's error,
   // and the frontiers selective refinement picks, as they were.
   TetId add_piece(const Tet& verts, TetId whole, FaceMask boundary);
+  // add_piece for each of `verts` (with boundary[i]), in one go: each array
+  // grows once. The pieces get consecutive ids, from the one returned.
+  TetId add_pieces(std::span<const Tet> verts, TetId whole, std::span<const FaceMask> boundary);
   // Appends a copy of `source`'s tet `t` over `verts` in fragments `birth`,
   // `death` of this MT, with t's error (computed or inherited) kept.
   TetId add_copy(const Mt& source, TetId t, const Tet& verts, FragId birth, FragId death);

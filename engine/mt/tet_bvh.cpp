@@ -182,8 +182,22 @@ void TetBvh::replace(const Mt& mt, TetId old, std::span<const TetId> pieces) {
     return;
   }
   if (where_.size() < mt.num_tets()) where_.resize(mt.num_tets(), -1);
-  for (TetId t : pieces)
-    if (where_[t.index()] == -1) append_to_leaf(static_cast<std::size_t>(leaf), t);
+  // The pieces join the leaf's list in one go (each array grown once).
+  const std::size_t first = extra_tet_.size();
+  std::int32_t head = extra_head_[static_cast<std::size_t>(leaf)];
+  for (TetId t : pieces) {
+    if (where_[t.index()] != -1) continue;  // already indexed
+    const auto e = static_cast<std::int32_t>(extra_tet_.size());
+    extra_tet_.push_back(t.value);
+    extra_next_.push_back(head);
+    head = e;
+    where_[t.index()] = -e - 2;
+  }
+  const std::size_t added = extra_tet_.size() - first;
+  extra_leaf_.resize(extra_tet_.size(), leaf);
+  extra_head_[static_cast<std::size_t>(leaf)] = head;
+  indexed_ += added;
+  edits_ += added;
 }
 
 ValidationReport TetBvh::validate(const Mt& mt) const {

@@ -155,6 +155,61 @@ TEST(Mt, PiecesInheritTheirSplitTetsFragmentsAndError) {
   EXPECT_EQ(copy.error(c), whole_error);
 }
 
+// add_pieces appends what add_piece would, one piece after the other: the
+// same tets, fragments, errors, masks, list order and slots. Both with a
+// replacing fragment and without one (an MT still being built).
+TEST(Mt, AddPiecesDoesWhatAddPieceDoesOneByOne) {
+  const auto same = [](const Mt& a, const Mt& b) {
+    ASSERT_EQ(a.num_tets(), b.num_tets());
+    for (std::size_t i = 0; i < a.num_tets(); ++i) {
+      const TetId t(i);
+      EXPECT_EQ(a.tet(t), b.tet(t)) << i;
+      EXPECT_EQ(a.birth(t), b.birth(t)) << i;
+      EXPECT_EQ(a.death(t), b.death(t)) << i;
+      EXPECT_EQ(a.error(t), b.error(t)) << i;
+      EXPECT_EQ(a.error_inherited(t), b.error_inherited(t)) << i;
+      EXPECT_EQ(a.boundary_mask(t), b.boundary_mask(t)) << i;
+    }
+    ASSERT_EQ(a.num_fragments(), b.num_fragments());
+    for (std::size_t f = 0; f < a.num_fragments(); ++f) {
+      EXPECT_TRUE(std::ranges::equal(a.created(FragId(f)), b.created(FragId(f)))) << f;
+      EXPECT_TRUE(std::ranges::equal(a.replaced(FragId(f)), b.replaced(FragId(f)))) << f;
+    }
+    EXPECT_EQ(a.num_live_tets(), b.num_live_tets());
+  };
+  const auto pieces_of = [](const Tet& whole) {
+    std::vector<Tet> out;
+    for (int i = 0; i < 4; ++i) {
+      Tet t = whole;
+      t[static_cast<std::size_t>(i)] = VertId(4);  // the centroid
+      out.push_back(t);
+    }
+    return out;
+  };
+  const std::vector<FaceMask> masks = {1, 2, 4, 8};
+  {  // the big tet: created by the collapse, replaced by the drain
+    StarMt one = make_star_mt(), all = make_star_mt();
+    const std::vector<Tet> pieces = pieces_of(one.mt.tet(one.big));
+    for (std::size_t i = 0; i < pieces.size(); ++i) one.mt.add_piece(pieces[i], one.big, masks[i]);
+    EXPECT_EQ(all.mt.add_pieces(pieces, all.big, masks), TetId(one.mt.num_tets() - 4));
+    same(one.mt, all.mt);
+    one.mt.kill_tet(one.big);
+    all.mt.kill_tet(all.big);
+    same(one.mt, all.mt);
+    const ValidationReport report = all.mt.validate();
+    EXPECT_TRUE(report.ok()) << report.summary();
+  }
+  {  // a fine tet of an MT being built: no replacing fragment yet
+    Mt one = Mt::from_fine_mesh(centroid_split()), all = one;
+    const Tet whole = one.tet(TetId(2));
+    const std::vector<Tet> pieces = {whole, whole};  // the content is not checked here
+    for (std::size_t i = 0; i < pieces.size(); ++i) one.add_piece(pieces[i], TetId(2), masks[i]);
+    all.add_pieces(pieces, TetId(2), std::span<const FaceMask>(masks).first(2));
+    same(one, all);
+    EXPECT_FALSE(all.death(TetId(all.num_tets() - 1)).valid());
+  }
+}
+
 // validate() catches a "piece" that does not lie in the tet it claims to
 // split: its inherited error is below its own.
 TEST(Mt, ValidateRejectsAnInheritedErrorBelowTheTetsOwn) {
