@@ -154,6 +154,31 @@ int CutPolygon::line_crossing(const Vec3& a, const Vec3& b) const {
   return 1;
 }
 
+int CutPolygon::segment_crossing(const Vec3& a, const Vec3& b, double da, double db) const {
+  // The crossing point's error: the distances' (a few ulps of the ends'
+  // offsets from the origin) over their gap, along the segment. Decide
+  // only when the point clears the outline by 1e-8 of the scene's size and
+  // the gap is not tiny, orders of magnitude above that error.
+  const double gap = std::abs(da - db);
+  const double offsets = (a - origin_).norm() + (b - origin_).norm();
+  if ((da < 0) == (db < 0) || !(gap > 1e-6 * offsets)) return line_crossing(a, b);
+  const Vec3 x = a + (da / (da - db)) * (b - a);
+  const Eigen::Vector2d p = project(x);
+  const double margin = 1e-8 * (diameter_ + (b - a).norm() + offsets);
+  bool inside = true, outside = false;
+  const std::size_t n = corners2d_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d& c = corners2d_[i];
+    const Eigen::Vector2d e = corners2d_[(i + 1) % n] - c;
+    const double distance = cross2d(e, p - c) / e.norm();  // positive inside (counter-clockwise)
+    inside &= distance > margin;
+    outside |= distance < -margin;
+  }
+  if (inside) return 1;
+  if (outside) return -1;
+  return line_crossing(a, b);
+}
+
 int CutPolygon::projects_inside(const Vec3& x) const {
   const Vec3 above = x + diameter_ * normal_;
   return line_crossing(x, above);

@@ -62,6 +62,12 @@ class CutPolygon {
   // Exact: does the line through a and b pass through the polygon?
   // +1 strictly inside, 0 through its outline, -1 outside (or parallel).
   int line_crossing(const Vec3& a, const Vec3& b) const;
+  // line_crossing(a, b) for a segment whose ends lie at signed distances
+  // da and db (signed_distance's, of opposite signs) from the plane: decided
+  // in floating point when the crossing point lies inside or outside the
+  // outline by far more than its rounding (the common case: no orient3d),
+  // else exactly. The same answer as line_crossing (a filtered predicate).
+  int segment_crossing(const Vec3& a, const Vec3& b, double da, double db) const;
   // Exact: +1 when x projects strictly inside, 0 onto the outline, -1 outside.
   int projects_inside(const Vec3& x) const;
 

@@ -360,7 +360,13 @@ bool CutClassifier::covered(EdgeInfo& e, VertId a, VertId b) const {
     // straddle the sheet and not the plane: the line through it may then
     // meet the polygon, the edge not.
     const Vec3 &p_lo = positions_[lo.index()], &p_hi = positions_[hi.index()];
-    const bool crosses_plane = !continuation_ || polygon_.side(p_lo) * polygon_.side(p_hi) < 0;
+    if (!continuation_) {
+      // The ends' distances to this polygon's plane are cached: a filter
+      // decides most edges without orient3d.
+      e.covered = polygon_.segment_crossing(p_lo, p_hi, distance(lo), distance(hi)) >= 0 ? 1 : 0;
+      return e.covered == 1;
+    }
+    const bool crosses_plane = polygon_.side(p_lo) * polygon_.side(p_hi) < 0;
     e.covered = crosses_plane && polygon_.line_crossing(p_lo, p_hi) >= 0 ? 1 : 0;
   }
   return e.covered == 1;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace mtcut::cut {
@@ -91,6 +92,58 @@ TEST(CutPolygon, LastInsideParameterIsWhereTheSegmentLeavesWhereverItStarts) {
   // Missing it: 0.
   EXPECT_EQ(square.last_inside_parameter(Vec3(-1, 2, 0), Vec3(2, 2.5, 0), &edge), 0.0);
   EXPECT_EQ(edge, -1);
+}
+
+// The filtered segment test gives line_crossing's exact answer on segments
+// built to be hard for it: crossing points at every distance from the
+// outline down to rounding, corners, segments nearly in the plane, and a
+// polygon far from the origin.
+TEST(CutPolygon, SegmentCrossingAgreesWithTheExactPredicate) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(0, 1), sym(-1, 1);
+  const Vec3 far(1234.5, -987.25, 401.125);
+  const std::vector<CutPolygon> polygons = {
+      CutPolygon::from_points({Vec3(-1, -1, 0.125), Vec3(1, -1, 0.25), Vec3(1, 1, 0.375), Vec3(-1, 1, 0.25)}),
+      CutPolygon::from_points({Vec3(0, 0, 0), Vec3(0.75, 0.125, 0.25), Vec3(0.25, 0.875, -0.5)}),
+      CutPolygon::from_points({far + Vec3(0, 0, 0), far + Vec3(2, 0, 1), far + Vec3(2, 3, 1), far + Vec3(0, 3, 0)})};
+  std::size_t on_outline = 0, inside = 0, outside = 0;
+  for (const CutPolygon& polygon : polygons) {
+    const auto& c = polygon.corners();
+    const double d = polygon.diameter();
+    for (int k = 0; k < 20000; ++k) {
+      // The crossing point: inside, on or near an edge or a corner, or outside.
+      const std::size_t i = rng() % c.size();
+      const Vec3 on_edge = c[i] + u(rng) * (c[(i + 1) % c.size()] - c[i]);
+      const Vec3 centre = (c[0] + c[1] + c[2]) / 3.0;
+      Vec3 x;
+      switch (k % 4) {
+        case 0: x = centre + u(rng) * (on_edge - centre); break;
+        case 1: x = on_edge + std::pow(10.0, -16 * u(rng)) * d * sym(rng) * (on_edge - centre).normalized(); break;
+        case 2: x = c[i]; break;
+        default: x = centre + (1 + 2 * u(rng)) * (on_edge - centre); break;
+      }
+      // Through it, a direction tilted off the plane by 1 down to 1e-12;
+      // through a corner, exactly: dyadic corners and offsets add exactly.
+      Vec3 along(sym(rng), sym(rng), sym(rng));
+      along -= along.dot(polygon.normal()) * polygon.normal();
+      const Vec3 dir = along + std::pow(10.0, -12 * u(rng)) * polygon.normal();
+      Vec3 a = x + (0.01 + 2 * u(rng)) * d * dir, b = x - (0.01 + 2 * u(rng)) * d * dir;
+      if (k % 4 == 2) {
+        const Vec3 offset = Vec3(std::ldexp(std::round(64 * sym(rng)), -6), std::ldexp(std::round(64 * sym(rng)), -6),
+                                 std::ldexp(1 + std::round(64 * u(rng)), -6));
+        a = x + offset;
+        b = x - offset;
+      }
+      const int exact = polygon.line_crossing(a, b);
+      ASSERT_EQ(polygon.segment_crossing(a, b, polygon.signed_distance(a), polygon.signed_distance(b)), exact)
+          << "polygon " << &polygon - polygons.data() << " case " << k;
+      (exact == 0 ? on_outline : exact > 0 ? inside : outside) += 1;
+    }
+  }
+  // Every kind of answer was asked for.
+  EXPECT_GT(on_outline, 100u);
+  EXPECT_GT(inside, 1000u);
+  EXPECT_GT(outside, 1000u);
 }
 
 TEST(CutPolygon, EdgeBetweenFindsAnOutlineEdgeByItsEnds) {
