@@ -335,9 +335,8 @@ bool CutClassifier::veto_requested(VertId v) const { return at(v).requested_off;
 CutClassifier::EdgeInfo& CutClassifier::edge(VertId a, VertId b) const {
   auto [it, fresh] = edges_.try_emplace(edge_key(a, b));
   if (fresh) {
-    it->second.t = raw_parameter(a, b);
     it->second.number = static_cast<std::int32_t>(edges_.size() - 1);
-    edge_t_.push_back(it->second.t);
+    edge_t_.push_back(raw_parameter(a, b));
   }
   return it->second;
 }

@@ -242,8 +242,7 @@ class CutClassifier {
 
  private:
   struct EdgeInfo {
-    double t = 0;              // from the lower id
-    std::int32_t number = 0;   // in the order edges are met
+    std::int32_t number = 0;   // in the order edges are met; its parameter is edge_t_[number]
     std::int8_t covered = -1;  // -1 not computed yet
   };
   static std::uint64_t edge_key(VertId a, VertId b);
@@ -299,7 +298,7 @@ class CutClassifier {
   std::unique_ptr<Scratch> own_scratch_;  // when none was given
   Scratch* scratch_;                      // info: (>= n_vertices) entries
   mutable absl::flat_hash_map<std::uint64_t, EdgeInfo> edges_;  // straddling edges met so far
-  mutable std::vector<double> edge_t_;  // (edges_) each numbered edge's EdgeInfo::t, by number
+  mutable std::vector<double> edge_t_;  // (edges_) each numbered edge's crossing parameter from its lower id
   std::vector<VertId> touched_;            // vertices of candidates
   std::vector<VertId> new_on_;             // put on since take_new_on_vertices()
   std::vector<VertId> on_vertices_;

@@ -97,11 +97,9 @@ PointSource point_source(const Tet& tet, Label label, const CutClassifier& class
       s.parents[0] = tet[i];
       s.weights[0] = 1;
       return s;
-    case LabelKind::kEdge: {
-      const VertId lo = std::min(tet[kTetEdges[i][0]], tet[kTetEdges[i][1]]);
-      const VertId hi = std::max(tet[kTetEdges[i][0]], tet[kTetEdges[i][1]]);
-      return edge_point_source(tet, i, classifier.crossing_parameter(lo, hi), positions);
-    }
+    case LabelKind::kEdge:
+      return edge_point_source(tet, i, classifier.crossing_parameter(tet[kTetEdges[i][0]], tet[kTetEdges[i][1]]),
+                               positions);
     case LabelKind::kFace: {
       const auto face = sorted_face(tet, i);
       return from_face(face, label_side(label) == LabelSide::kNone ? classifier.face_point(face)

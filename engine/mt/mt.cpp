@@ -83,8 +83,7 @@ TetId Mt::add_tet(const Tet& verts, FragId birth, FragId death, FaceMask boundar
 }
 
 TetId Mt::add_piece(const Tet& verts, TetId whole, FaceMask boundary) {
-  assert(alive(whole));
-  return append_tet(verts, birth(whole), death(whole), boundary, error(whole), true);
+  return add_pieces(std::span<const Tet>(&verts, 1), whole, std::span<const FaceMask>(&boundary, 1));
 }
 
 TetId Mt::add_pieces(std::span<const Tet> verts, TetId whole, std::span<const FaceMask> boundary) {

@@ -143,7 +143,7 @@ void TetBvh::insert(const Mt& mt, TetId t) {
     const double cost_right = grown_right.volume() - nodes[left + 1].box.volume();
     n = cost_left <= cost_right ? left : left + 1;
   }
-  append_to_leaf(n, t);
+  append_to_leaf(n, std::span<const TetId>(&t, 1));
 }
 
 std::int32_t TetBvh::leaf_of(TetId t) const {
@@ -153,15 +153,22 @@ std::int32_t TetBvh::leaf_of(TetId t) const {
   return w >= 0 ? slot_leaf_[static_cast<std::size_t>(w)] : extra_leaf_[static_cast<std::size_t>(-w - 2)];
 }
 
-void TetBvh::append_to_leaf(std::size_t n, TetId t) {
-  const auto e = static_cast<std::int32_t>(extra_tet_.size());
-  extra_tet_.push_back(t.value);
-  extra_next_.push_back(extra_head_[n]);
-  extra_leaf_.push_back(static_cast<std::int32_t>(n));
-  extra_head_[n] = e;
-  where_[t.index()] = -e - 2;
-  ++indexed_;
-  ++edits_;
+void TetBvh::append_to_leaf(std::size_t n, std::span<const TetId> tets) {
+  const std::size_t first = extra_tet_.size();
+  std::int32_t head = extra_head_[n];
+  for (TetId t : tets) {
+    if (where_[t.index()] != -1) continue;  // already indexed
+    const auto e = static_cast<std::int32_t>(extra_tet_.size());
+    extra_tet_.push_back(t.value);
+    extra_next_.push_back(head);
+    head = e;
+    where_[t.index()] = -e - 2;
+  }
+  const std::size_t added = extra_tet_.size() - first;
+  extra_leaf_.resize(extra_tet_.size(), static_cast<std::int32_t>(n));
+  extra_head_[n] = head;
+  indexed_ += added;
+  edits_ += added;
 }
 
 void TetBvh::reserve(std::size_t tets, std::size_t insertions) {
@@ -182,22 +189,7 @@ void TetBvh::replace(const Mt& mt, TetId old, std::span<const TetId> pieces) {
     return;
   }
   if (where_.size() < mt.num_tets()) where_.resize(mt.num_tets(), -1);
-  // The pieces join the leaf's list in one go (each array grown once).
-  const std::size_t first = extra_tet_.size();
-  std::int32_t head = extra_head_[static_cast<std::size_t>(leaf)];
-  for (TetId t : pieces) {
-    if (where_[t.index()] != -1) continue;  // already indexed
-    const auto e = static_cast<std::int32_t>(extra_tet_.size());
-    extra_tet_.push_back(t.value);
-    extra_next_.push_back(head);
-    head = e;
-    where_[t.index()] = -e - 2;
-  }
-  const std::size_t added = extra_tet_.size() - first;
-  extra_leaf_.resize(extra_tet_.size(), leaf);
-  extra_head_[static_cast<std::size_t>(leaf)] = head;
-  indexed_ += added;
-  edits_ += added;
+  append_to_leaf(static_cast<std::size_t>(leaf), pieces);  // in one go: each array grown once
 }
 
 ValidationReport TetBvh::validate(const Mt& mt) const {

@@ -126,8 +126,9 @@ class TetBvh {
  private:
   // The leaf indexing t (-1 when t is not indexed).
   std::int32_t leaf_of(TetId t) const;
-  // Appends t to leaf n's list (n's box and its ancestors' must hold t's box).
-  void append_to_leaf(std::size_t n, TetId t);
+  // Appends the tets not indexed yet to leaf n's list, in one go (n's box
+  // and its ancestors' must hold their boxes; where_ covers their ids).
+  void append_to_leaf(std::size_t n, std::span<const TetId> tets);
 
   template <class Visit>
   bool visit_leaf(std::int32_t n, Visit&& visit) const {

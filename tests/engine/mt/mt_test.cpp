@@ -155,9 +155,10 @@ TEST(Mt, PiecesInheritTheirSplitTetsFragmentsAndError) {
   EXPECT_EQ(copy.error(c), whole_error);
 }
 
-// add_pieces appends what add_piece would, one piece after the other: the
-// same tets, fragments, errors, masks, list order and slots. Both with a
-// replacing fragment and without one (an MT still being built).
+// A batch of pieces (add_pieces) is what the pieces one at a time
+// (add_piece) make: the same tets, fragments, errors, masks, list order and
+// slots (validate() and kill_tet read them). Both with a replacing fragment
+// and without one (an MT still being built).
 TEST(Mt, AddPiecesDoesWhatAddPieceDoesOneByOne) {
   const auto same = [](const Mt& a, const Mt& b) {
     ASSERT_EQ(a.num_tets(), b.num_tets());
