@@ -4,6 +4,7 @@
 
 #include "app/bench_cut.h"
 #include "app/bench_sim.h"
+#include "app/bench_stroke.h"
 #include "app/bench_table1.h"
 #include "app/json_report.h"
 
@@ -61,6 +62,22 @@ void register_bench_command(CLI::App& app) {
   table1->add_option("--markdown", table1_def->markdown, "also write the table as markdown, with the machine");
   table1->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
   table1->callback([table1_def, json] { print(run_table1_bench(*table1_def), *json); });
+
+  auto stroke_def = std::make_shared<StrokeBenchDef>();
+  CLI::App* stroke = bench->add_subcommand(
+      "stroke", "Progressive cutting: four scalpel strokes (straight, curved, L-turn, tip inside) on the builtin organ "
+                "and the real liver, cut once and in 60, 240 and 1,000 steps: new tets against the one-polygon cut, "
+                "per-step cut time, pieces");
+  stroke->add_option("--mesh", stroke_def->liver, "the real mesh instead of ../shared/meshes/liver2.obj");
+  stroke->add_option("--tets", stroke_def->organ_tets, "target tet count of the builtin organ")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  stroke->add_option("--steps", stroke_def->steps, "step counts of the progressive cuts")->capture_default_str();
+  stroke->add_option("--runs", stroke_def->runs, "runs per stroke and step count (median of each figure)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  stroke->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
+  stroke->callback([stroke_def, json] { print(run_stroke_bench(*stroke_def), *json); });
 }
 
 }  // namespace mtcut::app

@@ -36,13 +36,13 @@ MetricsRow record_frame(const sim::World& world, PieceCounter& pieces) {
 void write_metrics_csv(const std::string& path, std::span<const MetricsRow> rows) {
   engine::write_stream_atomically(path, [&](std::ostream& out) {
     out << "frame,sim_time,frontier_tets,frontier_vertices,cut_jobs_pending,cut_ms,lod_ms,sim_ms,frame_ms,"
-           "kinetic_energy,pieces\n";
+           "kinetic_energy,pieces,cut_vertices,provisional_tets\n";
     for (const MetricsRow& r : rows) {
       const sim::FrameMetrics& m = r.frame;
       out << m.frame + 1 << ',' << format_real(m.time) << ',' << m.frontier_tets << ',' << m.frontier_vertices << ','
           << r.cut_jobs_pending << ',' << format_real(m.cut_ms) << ',' << format_real(m.lod_ms) << ','
           << format_real(m.physics_ms) << ',' << format_real(m.total_ms) << ',' << format_real(r.kinetic_energy)
-          << ',' << r.pieces << '\n';
+          << ',' << r.pieces << ',' << m.cut_vertices << ',' << m.provisional_tets << '\n';
     }
   });
 }

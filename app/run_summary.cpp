@@ -92,6 +92,24 @@ nlohmann::ordered_json summarize_run(const ScenarioDef& scenario, const RunRecor
   out["frame_ms_mean"] = figure(frame_dist, "mean");
   out["frame_ms_p99"] = figure(frame_dist, "p99");
   out["nan_events"] = world.nan_events();
+  // The first frame (as metrics.csv numbers them) whose frontier shows a cut.
+  out["first_cut_frame"] = nullptr;
+  for (const MetricsRow& r : record.rows)
+    if (r.frame.cut_vertices > 0) {
+      out["first_cut_frame"] = r.frame.frame + 1;
+      break;
+    }
+  nlohmann::ordered_json strokes = nlohmann::ordered_json::array();
+  for (const sim::StrokeRecord& stroke : world.strokes())
+    strokes.push_back({{"first_frame", stroke.first_frame + 1},
+                       {"last_frame", stroke.last_frame + 1},
+                       {"finished", stroke.finished},
+                       {"new_tets", static_cast<std::int64_t>(stroke.live_tets_after) -
+                                        static_cast<std::int64_t>(stroke.live_tets_before)},
+                       {"tets_growth", stroke.live_tets_before > 0 ? static_cast<double>(stroke.live_tets_after) /
+                                                                         static_cast<double>(stroke.live_tets_before)
+                                                                   : 1.0}});
+  out["strokes"] = strokes;
   out["state_hash"] = hex(world.state_hash());
   out["frames_requested"] = record.frames_requested;
   out["interrupted"] = record.interrupted;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include <Eigen/Eigenvalues>
 
@@ -175,12 +176,15 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
   const Blade next(base, tip);
   std::vector<Vec3> corners;
   if (!extends(next, corners)) {
-    // The next part starts here, not at the last pose: parts never share a
-    // blade segment (see the header), at the price of the one sweep between
-    // them left uncut.
+    // The next part overlaps this one by half a sweep (see the header): it
+    // starts midway between the last two poses, then the last pose.
     out = close_part();
+    const Blade last = blades_.back();
+    const Blade& before = blades_[blades_.size() - 2];
     clear_part();
-    corners = {base, tip};
+    start_with(Blade(0.5 * (before.first + last.first), 0.5 * (before.second + last.second)));
+    start_with(last);
+    extends(next, corners);  // the hull corners with `next` (the part may not be planar: it starts anyway)
   }
   if (!blades_.empty()) {
     const Blade& last = blades_.back();
@@ -191,6 +195,34 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
   sums_.add(tip);
   hull_corners_ = std::move(corners);
   return out;
+}
+
+StrokeAdvance StrokeSweep::advance(std::span<const BladePose> poses) {
+  StrokeAdvance out;
+  for (const BladePose& pose : poses) {
+    std::vector<CutPolygon> ended;
+    if (pose.engaged) {
+      out.moved = out.moved || blades_.empty() || pose.base != blades_.back().first || pose.tip != blades_.back().second;
+      ended = add(pose.base, pose.tip);
+    } else if (active()) {
+      ended = finish();
+      out.moved = true;
+    }
+    out.ended.insert(out.ended.end(), std::make_move_iterator(ended.begin()), std::make_move_iterator(ended.end()));
+  }
+  return out;
+}
+
+void StrokeSweep::start_with(const Blade& blade) {
+  if (!blades_.empty()) {
+    const Blade& last = blades_.back();
+    swept_area_ += sweep_area(last.first, last.second, blade.first, blade.second);
+  }
+  blades_.push_back(blade);
+  sums_.add(blade.first);
+  sums_.add(blade.second);
+  hull_corners_.push_back(blade.first);
+  hull_corners_.push_back(blade.second);
 }
 
 void StrokeSweep::clear_part() {
@@ -208,7 +240,18 @@ std::vector<CutPolygon> StrokeSweep::finish() {
 
 std::vector<CutPolygon> StrokeSweep::close_part() {
   if (blades_.size() < 2) return {};
-  const Hull h = hull_of(corner_points(blades_));
+  return polygon_of(corner_points(blades_));
+}
+
+std::optional<CutPolygon> StrokeSweep::current() const {
+  if (blades_.size() < 2) return std::nullopt;
+  std::vector<CutPolygon> p = polygon_of(hull_corners_);
+  if (p.empty()) return std::nullopt;
+  return std::move(p.front());
+}
+
+std::vector<CutPolygon> StrokeSweep::polygon_of(const std::vector<Vec3>& points) {
+  const Hull h = hull_of(points);
   if (h.corners.size() < 3 || h.area <= CutPolygonDef{}.min_relative_area * h.diameter * h.diameter) return {};
   std::vector<Vec3> corners;
   corners.reserve(h.corners.size());

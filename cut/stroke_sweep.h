@@ -10,19 +10,24 @@
 // polygon's plane only up to rounding, and the re-split pinches the mesh
 // along the junction (an edge with both sides of the crack on it) at some
 // resolution of the MT. One polygon per straight part has no junction: the
-// MT cut stays a sequence of independent planar cuts, which the cutter does
-// exactly, and it makes fewer tets (no re-split band every frame). The price
-// is latency: a part is cut when the blade turns or leaves the tissue, not
-// while it is still moving in a straight line.
+// MT cut stays a sequence of planar cuts, which the cutter does exactly, and
+// it makes fewer tets (no re-split band every frame). The World still opens
+// the incision every frame: it cuts the part in progress (current())
+// provisionally and takes that cut back when the part grows
+// (cut/mt/cut_retraction.h), so each tet is split once from its original.
 //
 // A part ends when the next blade pose leaves its plane (beyond
 // `plane_tolerance` of its diameter) or would make the union of its sweeps
 // non-convex (the convex hull larger than the swept area by more than
-// `hull_excess`). The next part starts at that pose, not at the last one:
-// two parts sharing a blade segment would bring the junction back, so the
-// one sweep between them is left uncut (a turning stroke may leave a thin
-// bridge there; a straight one, the usual scalpel draw, is one exact cut).
+// `hull_excess`). The next part starts half a sweep back: at the pose midway
+// between the part's last two, then its last pose, then the new one. Two
+// parts sharing only a blade segment would bring the junction back; two that
+// overlap cross each other's plane along a line inside both, as any two
+// cuts may, and nothing is left uncut between them (a turning stroke
+// separates what it goes round).
 
+#include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -37,6 +42,18 @@ struct StrokeSweepDef {
   double hull_excess = 0.05;      // relative area the hull may exceed the sweeps by
 };
 
+// A pose of the scalpel's blade: base, tip, and whether it cuts.
+struct BladePose {
+  Vec3 base = Vec3::Zero(), tip = Vec3::Zero();
+  bool engaged = false;
+};
+
+// What a frame's poses did to the stroke.
+struct StrokeAdvance {
+  std::vector<CutPolygon> ended;  // polygons of the parts that ended, in order
+  bool moved = false;             // the part in progress changed, or the stroke ended
+};
+
 class StrokeSweep {
  public:
   explicit StrokeSweep(const StrokeSweepDef& def = {}) : def_(def) {}
@@ -47,18 +64,32 @@ class StrokeSweep {
   std::vector<CutPolygon> add(const Vec3& base, const Vec3& tip);
   // The stroke ended (the blade disengaged): the polygon of the last part.
   std::vector<CutPolygon> finish();
+  // The poses of a frame in time order: engaged ones add to the stroke (the
+  // first starts it), a disengaged one finishes an active stroke.
+  StrokeAdvance advance(std::span<const BladePose> poses);
   // A stroke has begun and not finished.
   bool active() const { return !blades_.empty(); }
+  // The polygon of the part in progress, its poses so far (nothing while
+  // they sweep no area): what progressive cutting cuts provisionally every
+  // frame until the part ends (cut/mt/cut_retraction.h).
+  std::optional<CutPolygon> current() const;
+  // Poses in the part in progress.
+  std::size_t part_poses() const { return blades_.size(); }
 
  private:
   using Blade = std::pair<Vec3, Vec3>;
   // The part's polygon (the convex hull of its blades, on their plane), or
   // nothing when it sweeps no area.
   std::vector<CutPolygon> close_part();
+  // The hull of `points` on their best plane, as a polygon (nothing when it
+  // has no area).
+  static std::vector<CutPolygon> polygon_of(const std::vector<Vec3>& points);
   // Would the part stay one planar convex polygon with `next` added?
   // `corners` receives the hull corners it would then have.
   bool extends(const Blade& next, std::vector<Vec3>& corners) const;
   void clear_part();
+  // Adds a pose to an empty or two-pose part, no questions asked.
+  void start_with(const Blade& blade);
 
   // Running sums over the part's blade ends (shifted by the first, against
   // cancellation): its best plane and its box in O(1) per pose.

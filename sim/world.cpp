@@ -8,7 +8,9 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "absl/container/flat_hash_map.h"
 #include "cut/cut_polygon.h"
+#include "cut/mt/cut_retraction.h"
 #include "sim/forces.h"
 #include "sim/rest_space_cut.h"
 #include "sim/state_transfer.h"
@@ -124,35 +126,54 @@ void World::take_cut_springs(FrameMetrics& m) {
 }
 
 void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
-  // The stroke's polygons: a straight part is cut once it ends (the blade
-  // turned or left the tissue), on the tissue's current shape. Every pose of
-  // the frame goes through the sweep in order, so a turn within the frame
-  // ends a part there.
-  std::vector<cut::CutPolygon> polygons;
-  for (const ScalpelPose& pose : poses) {
-    std::vector<cut::CutPolygon> ended;
-    if (pose.engaged) {
-      ended = stroke_.add(pose.base, pose.tip);
-    } else if (stroke_.active()) {
-      ended = stroke_.finish();
+  // The stroke's polygons: every pose of the frame goes through the sweep in
+  // order, so a turn within the frame ends a part there. A part that ended
+  // is cut for good; the part in progress is cut provisionally, every frame
+  // its blade moves (cut_retraction.h says how and why).
+  std::vector<cut::BladePose> blades;
+  blades.reserve(poses.size());
+  for (const ScalpelPose& pose : poses) blades.push_back({pose.base, pose.tip, pose.engaged});
+  const bool was_active = stroke_.active();
+  cut::StrokeAdvance advance = stroke_.advance(blades);
+  if (!was_active && (stroke_.active() || !advance.ended.empty()))
+    strokes_.push_back({frame_, frame_, mt_.num_live_tets(), mt_.num_live_tets(), false});
+  const bool recut = advance.moved || !advance.ended.empty();
+  if (!recut && !cutter_.frozen()) return;
+  take_lod_move(m);  // the MT is about to change
+  DeformationSnapshot snapshot = take_snapshot(mt_, frontier_, model_, state_);
+  // The provisional cut's vertices by key: the same point made again takes
+  // their state (an incision that has opened stays open).
+  absl::flat_hash_map<cut::PointKey, VertId, cut::PointKeyHash> provisional_points;
+  if (recut) {
+    if (const cut::MtChangeReport* held = cutter_.provisional_changes()) {
+      for (const cut::MadeVertex& made : held->made_vertices) provisional_points.emplace(made.key, made.id);
+      cut_vertices_ -= held->made_vertices.size();  // retracted below: unused from now on
     }
-    polygons.insert(polygons.end(), std::make_move_iterator(ended.begin()), std::make_move_iterator(ended.end()));
-  }
-  if (!polygons.empty() || cutter_.frozen()) take_lod_move(m);  // the MT is about to change
-  if (!polygons.empty()) {
     // Cut in rest space (rest_space_cut.h says why).
     std::vector<Vec3> rest(model_.num_particles());
     for (std::size_t p = 0; p < rest.size(); ++p) rest[p] = mt_.position(model_.particle_vertex[p]);
-    for (const auto& polygon : polygons) cutter_.submit(mt_, rest_space_polygon(polygon, rest, state_.x), {});
-    m.cuts_started = polygons.size();
+    for (auto& polygon : advance.ended) polygon = rest_space_polygon(polygon, rest, state_.x);
+    std::optional<cut::CutPolygon> current = stroke_.current();
+    if (current) current = rest_space_polygon(*current, rest, state_.x);
+    m.cuts_started = advance.ended.size() + (current ? 1 : 0);
+    if (const auto retraction = cutter_.recut(mt_, bvh_, advance.ended, current)) {
+      frontier_ = cut::retract_frontier(mt_, frontier_, *retraction);
+      m.retracted_tets = retraction->killed.size();
+      if (m.cuts_started == 0) pieces_ = cut::find_pieces(mt_).count;  // the stroke left nothing to cut
+    }
   }
-  if (!cutter_.frozen()) return;
-  DeformationSnapshot snapshot = take_snapshot(mt_, frontier_, model_, state_);
   const cut::CutBudget budget = def_.cut_budget.unit == CutBudgetDef::Unit::kTets
                                     ? cut::CutBudget::units(static_cast<std::size_t>(def_.cut_budget.amount))
                                     : cut::CutBudget::ms(def_.cut_budget.amount);
   auto result = cutter_.run(mt_, bvh_, frontier_, budget);
   cut::follow_cut(mt_, frontier_, result.changes);
+  cut_vertices_ += result.changes.made_vertices.size();
+  if (!strokes_.empty() && !strokes_.back().finished) {
+    StrokeRecord& stroke = strokes_.back();
+    stroke.last_frame = frame_;
+    stroke.live_tets_after = mt_.num_live_tets();
+    stroke.finished = !stroke_.active() && !cutter_.frozen();
+  }
   m.cut_tets = result.changes.replaced.size();
   if (result.pieces) pieces_ = result.pieces->count;
   // Jobs of hidden fragments (a small budget defers them to later frames)
@@ -165,8 +186,14 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
       tets.size() != snapshot.simulated_tets.size() || !std::all_of(tets.begin(), tets.end(), was_simulated);
   if (mesh_changed) {
     OriginIndex origins;
-    for (const auto& made : result.changes.made_vertices)
-      origins.by_vertex[made.id.value] = VertexOrigin{made.source.parents, made.source.weights};
+    for (const auto& made : result.changes.made_vertices) {
+      const auto again = provisional_points.find(made.key);
+      if (again != provisional_points.end() && snapshot.particle_of[again->second.index()] >= 0) {
+        origins.by_vertex[made.id.value] = VertexOrigin{{again->second}, {1.0}};
+      } else {
+        origins.by_vertex[made.id.value] = VertexOrigin{made.source.parents, made.source.weights};
+      }
+    }
     cut_springs_ = std::make_unique<CutSprings>(CutSprings{ModelBuild(), std::move(snapshot), std::move(origins)});
     const DeformationSnapshot& before = cut_springs_->snapshot;
     cut_springs_->springs = start_model_build(frontier_, before.simulated_tets.members(),
@@ -236,6 +263,8 @@ const FrameMetrics& World::step(std::span<const ScalpelPose> poses) {
   m.frontier_tets = frontier_.tets().size();
   m.frontier_vertices = frontier_.vertices().size();
   m.springs = model_.num_springs();
+  m.cut_vertices = cut_vertices_;
+  m.provisional_tets = cutter_.provisional_changes() ? cutter_.provisional_changes()->made_tets.size() : 0;
   m.total_ms = ms_since(frame_start);
   last_ = m;
   return last_;
@@ -272,6 +301,8 @@ engine::ValidationReport World::validate() const {
   for (auto& p : engine::validate_frontier(mt_, frontier_).problems) report.add("frontier: " + p);
   for (auto& p : model_.validate().problems) report.add("springs: " + p);
   if (state_.x.size() != model_.num_particles()) report.add("state and spring model differ in size");
+  for (auto& p : bvh_.validate(mt_).problems) report.add("bvh: " + p);
+  for (auto& p : cutter_.validate(mt_).problems) report.add(p);
   return report;
 }
 

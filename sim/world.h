@@ -7,15 +7,21 @@
 //   1. scalpel   take the frame's poses: every sample of the blade since the
 //                last frame, in time order (a fast stroke is a polyline of
 //                poses, not one jump), the last one the frame's pose;
-//   2. cut       merge the engaged blade's poses into one cut polygon per
-//                straight part of the stroke (cut/stroke_sweep.h says why),
-//                carry each from the deformed tissue to rest space
-//                (rest_space_cut.h says why), queue it, run the time-critical
-//                cutter within its budget, map the frontier through the
-//                fragments it split and, when its tets changed, start
-//                building the springs on it (taken in stage 3, the state
-//                carried over, cut vertices from their parents); a piece the
-//                cut separates has no spring left to the rest and falls;
+//   2. cut       extend the engaged blade's stroke by the poses; a straight
+//                part of it that ended (the blade turned or left) is cut
+//                for good, and the part in progress is cut provisionally:
+//                every frame its blade moves, the last frame's provisional
+//                cut is taken back and the part's polygon so far cut afresh
+//                (cut/mt/cut_retraction.h says why), so the incision opens
+//                behind the blade in the frame it passes. Polygons go from
+//                the deformed tissue to rest space (rest_space_cut.h says
+//                why); the time-critical cutter runs within its budget, the
+//                frontier follows the fragments it split and, when its tets
+//                changed, the springs on it start building (taken in stage
+//                3, the state carried over, cut vertices from their parents
+//                or from the last provisional cut's vertex of the same key);
+//                a piece the cut separates has no spring left to the rest
+//                and falls;
 //   3. lod       unless the cutter froze it, take the frontier move decided
 //                def.lod.build_frames ago, with its springs (built
 //                meanwhile, sim/model_build.h), and carry the state over;
@@ -54,6 +60,14 @@
 
 namespace mtcut::sim {
 
+// What one stroke of the scalpel did to the MT: from the frame its blade
+// engaged to the frame its last cut finished.
+struct StrokeRecord {
+  std::uint64_t first_frame = 0, last_frame = 0;  // frames as FrameMetrics::frame counts them
+  std::size_t live_tets_before = 0, live_tets_after = 0;  // MT tets, all resolutions
+  bool finished = false;  // the blade disengaged and every cut of the stroke is done
+};
+
 struct FrameMetrics {
   std::uint64_t frame = 0;
   double time = 0;                 // simulated seconds at the end of the frame
@@ -62,6 +76,9 @@ struct FrameMetrics {
   std::size_t lod_changes = 0;     // fragments added or removed this frame
   std::size_t cuts_started = 0;    // cut polygons the blade's stroke gave this frame
   std::size_t cut_tets = 0;        // MT tets the cutter replaced this frame
+  std::size_t retracted_tets = 0;  // pieces of the last provisional cut taken back this frame
+  std::size_t cut_vertices = 0;    // MT vertices the cuts so far have made and use (a retracted cut's are not)
+  std::size_t provisional_tets = 0;  // live pieces of the provisional cut of the stroke's part in progress
   std::size_t cut_jobs_pending = 0;
   int springs_built = 0;           // spring models made this frame (a cut's, an LOD move's taken)
   bool frozen = false;             // the cutter held the resolution this frame
@@ -97,6 +114,8 @@ class World {
   std::size_t pieces() const { return pieces_; }
   const cut::TimeCriticalCutter& cutter() const { return cutter_; }
   const FrameMetrics& last_frame() const { return last_; }
+  // The strokes so far, oldest first (the last one may be in progress).
+  const std::vector<StrokeRecord>& strokes() const { return strokes_; }
 
   // Deformed position of every MT vertex (visible: simulated; hidden:
   // carried by the frontier tet holding it in rest space), (n_mt_vertices).
@@ -106,7 +125,8 @@ class World {
   // and the MT's size: equal across runs iff the runs are bit-identical.
   std::uint64_t state_hash() const;
 
-  // MT, frontier and spring model all valid (tests call it after steps).
+  // MT, frontier, BVH, cutter (a held provisional cut can be taken back)
+  // and spring model all valid (tests call it after steps).
   engine::ValidationReport validate() const;
 
  private:
@@ -162,6 +182,8 @@ class World {
   cut::StrokeSweep stroke_;  // the engaged blade's poses, merged into cut polygons
   cut::TimeCriticalCutter cutter_;
   std::size_t pieces_ = 1;
+  std::size_t cut_vertices_ = 0;  // FrameMetrics::cut_vertices
+  std::vector<StrokeRecord> strokes_;
   ScalpelPose last_pose_;
   double time_ = 0;
   std::uint64_t frame_ = 0;

@@ -27,6 +27,7 @@ using engine::TetId;
 // relabelled onto the copy of a vertex the cut passes through).
 struct TetReplacement {
   TetId old;              // killed
+  FragId birth, death;    // old's fragments when it was killed (what a retraction restores)
   std::uint32_t first;    // offset of its pieces in MtChangeReport::made_tets
   std::uint32_t count;    // number of pieces
 };

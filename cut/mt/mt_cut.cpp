@@ -398,9 +398,10 @@ void MtCut::change_tet(Mt& mt, TetBvh& bvh, Pending& p, MtChangeReport& report) 
     pieces_.push_back(mt.add_piece(made[0], old, static_cast<FaceMask>(mask | p.on_faces)));
     ++report.counts.relabeled_tets;
   }
+  const FragId birth = mt.birth(old), death = mt.death(old);
   mt.kill_tet(old);
   bvh.replace(mt, old, pieces_);
-  report.replaced.push_back({old, static_cast<std::uint32_t>(report.made_tets.size()),
+  report.replaced.push_back({old, birth, death, static_cast<std::uint32_t>(report.made_tets.size()),
                              static_cast<std::uint32_t>(pieces_.size())});
   report.made_tets.insert(report.made_tets.end(), pieces_.begin(), pieces_.end());
   p.done = true;

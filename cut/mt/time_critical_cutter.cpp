@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <string>
 
 namespace mtcut::cut {
@@ -14,10 +15,38 @@ using Clock = std::chrono::steady_clock;
 TimeCriticalCutter::TimeCriticalCutter(const TimeCriticalCutterDef& def) : def_(def), table_(def.cut.scheme) {}
 
 void TimeCriticalCutter::submit(const Mt& mt, const CutPolygon& polygon, std::vector<Vec3> geometry) {
+  if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
   if (!geometry.empty() && geometry.size() != mt.num_vertices())
     throw std::invalid_argument("TimeCriticalCutter::submit: " + std::to_string(geometry.size()) +
                                 " positions for " + std::to_string(mt.num_vertices()) + " MT vertices");
   queue_.push_back({polygon, std::move(geometry)});
+}
+
+void TimeCriticalCutter::submit_provisional(const Mt& mt, const CutPolygon& polygon) {
+  if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
+  submit(mt, polygon);
+  queue_.back().provisional = true;
+  provisional_queued_ = true;
+}
+
+std::optional<CutRetraction> TimeCriticalCutter::retract(Mt& mt, TetBvh& bvh) {
+  if (provisional_queued_) {
+    queue_.pop_back();
+    provisional_queued_ = false;
+  }
+  if (!provisional_) return std::nullopt;
+  if (active_ && active_->provisional) active_.reset();
+  CutRetraction out = retract_cut(mt, bvh, provisional_->changes, provisional_->fragments_before);
+  provisional_.reset();
+  return out;
+}
+
+std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
+                                                       const std::optional<CutPolygon>& current) {
+  std::optional<CutRetraction> out = retract(mt, bvh);
+  for (const CutPolygon& polygon : ended) submit(mt, polygon);
+  if (current) submit_provisional(mt, *current);
+  return out;
 }
 
 void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {
@@ -40,6 +69,11 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   queue_.pop_front();
   bvh.refresh(mt);  // between two cuts: the index edits of the last one never rebuild mid-cut
   Active a;
+  a.provisional = q.provisional;
+  if (q.provisional) {
+    provisional_queued_ = false;
+    provisional_.emplace(Provisional{mt.num_fragments(), {}});
+  }
   a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def_.cut, table_, &workspace_);
   const auto jobs = a.cut->jobs();
   for (std::size_t j = 0; j < jobs.size(); ++j)
@@ -73,7 +107,14 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
       const std::size_t job = a.order[a.next++];
       const std::size_t before = result.changes.made_vertices.size();
       spent += a.cut->job_cost(mt, job);
-      a.cut->process(mt, bvh, job, result.changes);
+      if (a.provisional) {
+        MtChangeReport changes;
+        a.cut->process(mt, bvh, job, changes);
+        provisional_->changes.append(changes);
+        result.changes.append(changes);
+      } else {
+        a.cut->process(mt, bvh, job, result.changes);
+      }
       ++jobs;
       if (result.changes.made_vertices.size() > before && !queue_.empty()) {
         extend_geometry(std::span<const MadeVertex>(result.changes.made_vertices).subspan(before));
@@ -103,9 +144,14 @@ CutterProgress TimeCriticalCutter::progress() const {
 
 engine::ValidationReport TimeCriticalCutter::validate(const Mt& mt) const {
   engine::ValidationReport report;
+  if (provisional_)
+    for (auto& p : validate_retractable(mt, provisional_->changes, provisional_->fragments_before).problems)
+      report.add("cutter: provisional cut: " + p);
+  if (provisional_queued_ && (queue_.empty() || !queue_.back().provisional))
+    report.add("cutter: a provisional cut is counted as queued but the queue's last entry is not one");
   if (!active_) return report;
   const Active& a = *active_;
-  report = a.cut->validate(mt);
+  for (auto& p : a.cut->validate(mt).problems) report.add(p);
   for (std::size_t i = 0; i < a.order.size(); ++i) {
     const bool done = a.cut->job_done(a.order[i]);
     if (done != (i < a.next)) report.add("cutter: job order entry " + std::to_string(i) + " done out of order");

@@ -20,6 +20,13 @@
 //     carry state over the report (made vertices, replaced tets);
 //     if (!cutter.frozen()) move the frontier (selective refinement).
 //
+// Provisional cuts. Progressive cutting (DESIGN.md, "Progressive cutting";
+// cut_retraction.h) cuts a growing stroke's polygon every frame and takes
+// the last frame's cut back first: submit_provisional() queues a cut that
+// is held, once started, with everything it changed, until retract() undoes
+// it (the MT as before it, up to numbering). At most one is held, and it is
+// the last cut: retract() before submitting anything else.
+//
 // Budgets are work units (tets split or relabelled, plus one per job: the
 // same on every machine, so runs are reproducible) and/or milliseconds;
 // every call does at least one job when any is pending.
@@ -32,6 +39,7 @@
 #include <span>
 #include <vector>
 
+#include "cut/mt/cut_retraction.h"
 #include "cut/mt/mt_cut.h"
 #include "cut/mt/mt_pieces.h"
 #include "engine/mt/frontier.h"
@@ -68,11 +76,28 @@ class TimeCriticalCutter {
  public:
   explicit TimeCriticalCutter(const TimeCriticalCutterDef& def = {});
 
-  // Queues a cut behind the others. `geometry`: positions of the MT's
+  // Queues a cut behind the others (std::logic_error while a provisional
+  // cut is held). `geometry`: positions of the MT's
   // current vertices the cut is computed on (deformed), empty = rest
   // positions when the cut starts. Vertices made before it starts get theirs
   // from their parents.
   void submit(const Mt& mt, const CutPolygon& polygon, std::vector<Vec3> geometry = {});
+  // Queues a provisional cut (in rest space), to be taken back by retract().
+  // Throws std::logic_error while one is held.
+  void submit_provisional(const Mt& mt, const CutPolygon& polygon);
+  // A provisional cut is queued, in progress or done and not retracted.
+  bool provisional_held() const { return provisional_queued_ || provisional_.has_value(); }
+  // Takes the provisional cut back: a queued one is dropped, a started one
+  // (its pending jobs dropped) is undone in `mt` and `bvh`. nullopt when none
+  // had started. The caller maps its frontier (retract_frontier).
+  std::optional<CutRetraction> retract(Mt& mt, TetBvh& bvh);
+  // A stroke's frame (cut/stroke_sweep.h): retract(), then queue `ended`
+  // (the parts that ended) for good and `current` (the part in progress)
+  // provisionally, all in rest space. Returns the retraction.
+  std::optional<CutRetraction> recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
+                                     const std::optional<CutPolygon>& current);
+  // What the held provisional cut has changed so far (empty when none).
+  const MtChangeReport* provisional_changes() const { return provisional_ ? &provisional_->changes : nullptr; }
 
   // Processes jobs within `budget`, visible fragments of `frontier` first
   // (frontier: the World's, mapped after every call). Returns what changed;
@@ -87,16 +112,19 @@ class TimeCriticalCutter {
   bool frozen() const { return active_.has_value() || !queue_.empty(); }
   CutterProgress progress() const;
   // The active cut's bookkeeping (MtCut::validate) and the job order:
-  // no hidden job done while a visible one is pending.
+  // no hidden job done while a visible one is pending; a held provisional
+  // cut can be retracted (validate_retractable).
   engine::ValidationReport validate(const Mt& mt) const;
 
  private:
   struct Queued {
     CutPolygon polygon;
     std::vector<Vec3> geometry;  // empty = rest
+    bool provisional = false;
   };
   struct Active {
     std::unique_ptr<MtCut> cut;
+    bool provisional = false;
     std::vector<std::size_t> order;   // jobs: visible first, then hidden, ascending within each
     std::size_t visible = 0;          // leading entries of `order` that are visible
     std::size_t next = 0;             // next entry of `order`
@@ -109,6 +137,14 @@ class TimeCriticalCutter {
   MtCutWorkspace workspace_;  // reused by each cut in turn
   std::deque<Queued> queue_;
   std::optional<Active> active_;
+  // The started provisional cut: the MT's fragment count when it started
+  // and every change it made, what retract() undoes.
+  struct Provisional {
+    std::size_t fragments_before = 0;
+    MtChangeReport changes;
+  };
+  std::optional<Provisional> provisional_;
+  bool provisional_queued_ = false;  // the queue's last entry is provisional
   CutterProgress totals_;
 };
 

@@ -159,6 +159,19 @@ void Mt::kill_tet(TetId t) {
   --live_tets_;
 }
 
+void Mt::revive_tet(TetId t, FragId birth, FragId death) {
+  assert(!alive(t) && birth.valid() && birth.index() < num_fragments());
+  tet_birth_[t.index()] = birth;
+  tet_birth_slot_[t.index()] = static_cast<std::int32_t>(frag_created_[birth.index()].size());
+  frag_created_[birth.index()].push_back(t);
+  tet_death_[t.index()] = FragId();
+  tet_death_slot_[t.index()] = -1;
+  ++live_tets_;
+  ++revision_;
+  frag_created_revision_[birth.index()] = revision_;
+  if (death.valid()) set_death(t, death);
+}
+
 void Mt::set_birth(TetId t, FragId f) {
   assert(alive(t) && f.valid());
   erase_from(frag_created_, tet_birth_slot_, birth(t), t);
@@ -227,6 +240,15 @@ FragId Mt::add_fragment() {
   ++revision_;
   frag_created_revision_.push_back(revision_);
   return FragId(frag_created_.size() - 1);
+}
+
+void Mt::remove_last_fragment() {
+  assert(num_fragments() > 1 && frag_created_.back().empty() && frag_replaced_.back().empty());
+  assert(FragId(num_fragments() - 1) != root_ && FragId(num_fragments() - 1) != drain_);
+  frag_created_.pop_back();
+  frag_replaced_.pop_back();
+  frag_created_revision_.pop_back();
+  ++revision_;
 }
 
 std::vector<FragId> Mt::parents(FragId f) const {

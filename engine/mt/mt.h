@@ -92,6 +92,10 @@ class Mt {
   TetId add_copy(const Mt& source, TetId t, const Tet& verts, FragId birth, FragId death);
   // Removes t from the MT: it leaves its fragments' lists; the slot stays.
   void kill_tet(TetId t);
+  // Brings a killed tet back, created by `birth` and replaced by `death`
+  // (none allowed): what retracting a provisional cut does to the tets it
+  // split (cut/mt/cut_retraction.h).
+  void revive_tet(TetId t, FragId birth, FragId death);
   // Moves t to another creating / replacing fragment (re-attaching an arc).
   void set_birth(TetId t, FragId f);
   void set_death(TetId t, FragId f);
@@ -119,6 +123,9 @@ class Mt {
   // Largest error of the tets f creates (0 when it creates none).
   float fragment_error(FragId f) const;
   FragId add_fragment();
+  // Removes the last fragment, which must create and replace nothing (the
+  // part a retracted cut made, its tets moved back).
+  void remove_last_fragment();
   // Room for f's lists to grow to `created` and `replaced` tets without reallocating.
   void reserve_fragment(FragId f, std::size_t created, std::size_t replaced);
   void set_drain(FragId f) { drain_ = f; }

@@ -113,16 +113,16 @@ TEST_F(RunOutputs, EveryOutputExistsAndParses) {
   EXPECT_EQ(summary["interrupted"], false);
   EXPECT_GE(summary["pieces"].get<int>(), 1);
 
-  // metrics.csv: the header, then one row of 11 fields per frame.
+  // metrics.csv: the header, then one row of 13 fields per frame.
   const auto lines = lines_of(read_text(out + "/metrics.csv"));
   ASSERT_EQ(lines.size(), 11u);
   EXPECT_EQ(lines[0],
             "frame,sim_time,frontier_tets,frontier_vertices,cut_jobs_pending,cut_ms,lod_ms,sim_ms,frame_ms,"
-            "kinetic_energy,pieces");
+            "kinetic_energy,pieces,cut_vertices,provisional_tets");
   double last_time = 0;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const auto f = fields_of(lines[i]);
-    ASSERT_EQ(f.size(), 11u) << lines[i];
+    ASSERT_EQ(f.size(), 13u) << lines[i];
     EXPECT_EQ(std::stoi(f[0]), static_cast<int>(i));
     EXPECT_GT(std::stod(f[1]), last_time);
     last_time = std::stod(f[1]);

@@ -1,0 +1,130 @@
+#include "cut/mt/cut_retraction.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace mtcut::cut {
+namespace {
+
+// The fragment f stands for once the cut's parts are merged back: parts
+// (from fragments_before on) map to the fragment they were split from,
+// following chains (a part split again within the cut).
+class PartMap {
+ public:
+  PartMap(const MtChangeReport& cut, std::size_t fragments_before) : first_(fragments_before) {
+    for (const FragmentSplit& s : cut.fragment_splits)
+      for (FragId p : s.parts) {
+        if (p == s.old) continue;
+        if (p.index() < first_) throw std::logic_error("retract_cut: a part made before the cut");
+        const std::size_t i = p.index() - first_;
+        if (of_.size() <= i) of_.resize(i + 1);
+        of_[i] = s.old;
+      }
+  }
+  FragId resolve(FragId f) const {
+    while (f.valid() && f.index() >= first_) {
+      const std::size_t i = f.index() - first_;
+      if (i >= of_.size() || !of_[i].valid()) return FragId();
+      f = of_[i];
+    }
+    return f;
+  }
+
+ private:
+  std::size_t first_;
+  std::vector<FragId> of_;  // (parts) the fragment each part came from, none = not a part
+};
+
+}  // namespace
+
+engine::ValidationReport validate_retractable(const engine::Mt& mt, const MtChangeReport& cut,
+                                              std::size_t fragments_before) {
+  engine::ValidationReport report;
+  const PartMap parts(cut, fragments_before);
+  for (const TetReplacement& r : cut.replaced) {
+    if (mt.alive(r.old)) report.add("retraction: replaced tet " + std::to_string(r.old.value) + " is alive");
+    if (!r.birth.valid() || r.birth.index() >= fragments_before)
+      report.add("retraction: replaced tet " + std::to_string(r.old.value) + " was born in a fragment the cut made");
+    if (r.first + r.count > cut.made_tets.size())
+      report.add("retraction: replaced tet " + std::to_string(r.old.value) + " has pieces out of range");
+  }
+  for (TetId t : cut.made_tets)
+    if (!mt.alive(t)) report.add("retraction: piece " + std::to_string(t.value) + " is dead");
+  for (std::size_t f = fragments_before; f < mt.num_fragments(); ++f)
+    if (!parts.resolve(FragId(f)).valid())
+      report.add("retraction: fragment " + std::to_string(f) + " is not a part the cut made");
+  return report;
+}
+
+CutRetraction retract_cut(engine::Mt& mt, engine::TetBvh& bvh, const MtChangeReport& cut,
+                          std::size_t fragments_before) {
+  if (const auto report = validate_retractable(mt, cut, fragments_before); !report.ok())
+    throw std::logic_error("retract_cut: " + report.problems.front());
+  const PartMap parts(cut, fragments_before);
+  CutRetraction out;
+  // Tets in the parts go back to the fragments the parts were split from.
+  // Pieces among them are killed below; the others are the fragments' own.
+  for (std::size_t f = mt.num_fragments(); f-- > fragments_before;) {
+    const FragId part(f), into = parts.resolve(part);
+    out.merged.emplace_back(part, into);
+    const std::vector<TetId> created(mt.created(part).begin(), mt.created(part).end());
+    for (TetId t : created) mt.set_birth(t, into);
+    const std::vector<TetId> replaced(mt.replaced(part).begin(), mt.replaced(part).end());
+    for (TetId t : replaced) mt.set_death(t, into);
+  }
+  out.killed.reserve(cut.made_tets.size());
+  for (TetId t : cut.made_tets) {
+    bvh.remove(t);
+    mt.kill_tet(t);
+    out.killed.push_back(t);
+  }
+  out.revived.reserve(cut.replaced.size());
+  for (auto r = cut.replaced.rbegin(); r != cut.replaced.rend(); ++r) {
+    mt.revive_tet(r->old, r->birth, parts.resolve(r->death));
+    bvh.insert(mt, r->old);
+    out.revived.push_back(r->old);
+  }
+  while (mt.num_fragments() > fragments_before) {
+    mt.remove_last_fragment();
+    ++out.fragments_removed;
+  }
+  return out;
+}
+
+std::vector<FragId> retract_fragment_set(const engine::Mt& mt, std::span<const FragId> fragments,
+                                         const CutRetraction& retraction) {
+  const std::size_t n = mt.num_fragments();
+  std::vector<FragId> into(n + retraction.fragments_removed);
+  for (const auto& [part, whole] : retraction.merged) into[part.index()] = whole;
+  std::vector<char> in(n, 0);
+  std::vector<FragId> stack;
+  const auto add = [&](FragId f) {
+    if (!in[f.index()]) {
+      in[f.index()] = 1;
+      stack.push_back(f);
+    }
+  };
+  for (FragId f : fragments) {
+    while (f.index() >= n) f = into[f.index()];
+    add(f);
+  }
+  // Closure under parents: a fragment's parents are the births of the tets
+  // it replaces.
+  while (!stack.empty()) {
+    const FragId f = stack.back();
+    stack.pop_back();
+    for (TetId t : mt.replaced(f)) add(mt.birth(t));
+  }
+  std::vector<FragId> out;
+  for (std::size_t f = 0; f < n; ++f)
+    if (in[f]) out.emplace_back(f);
+  return out;
+}
+
+engine::Frontier retract_frontier(const engine::Mt& mt, const engine::Frontier& frontier,
+                                  const CutRetraction& retraction) {
+  return engine::Frontier::from_fragments(mt, retract_fragment_set(mt, frontier.fragments(), retraction));
+}
+
+}  // namespace mtcut::cut

@@ -1,0 +1,60 @@
+#pragma once
+// Retracting a provisional cut: the MT as it was before the cut, up to the
+// order of the fragments' lists. The tets the cut split are alive again in
+// the fragments they had, its pieces are dead, the fragments it decomposed
+// are whole again and the parts it made are removed (they were the last
+// fragments). This is what makes progressive cutting (DESIGN.md,
+// "Progressive cutting") split every tet once from its original: while a
+// stroke's straight part grows, each frame cuts the part's polygon so far
+// provisionally, and the next frame retracts that cut and cuts the grown
+// polygon afresh, so no piece of a provisional split is ever cut again.
+//
+// Why vertices stay. The vertices the cut made are left in the MT, unused:
+// ids are never reused, so whatever a caller keyed by vertex or tet id (the
+// spring model, a snapshot of the simulated state) stays unambiguous. Tets
+// keep their slots too (a tet is never erased, only killed).
+
+#include <span>
+#include <vector>
+
+#include "cut/mt/mt_change_report.h"
+#include "engine/mt/frontier.h"
+#include "engine/mt/mt.h"
+#include "engine/mt/tet_bvh.h"
+#include "engine/validation.h"
+
+namespace mtcut::cut {
+
+struct CutRetraction {
+  std::vector<TetId> revived;  // the tets the cut had split or relabelled, alive again
+  std::vector<TetId> killed;   // its pieces that were alive (now dead)
+  // (part, fragment): each fragment the cut had made, removed, and the one
+  // it was a part of (whose id survives).
+  std::vector<std::pair<FragId, FragId>> merged;
+  std::size_t fragments_removed = 0;
+};
+
+// Undoes `cut`, every change a provisional cut made (all its calls' reports
+// appended, cut/mt/mt_change_report.h), started when the MT had
+// `fragments_before` fragments and followed by no other edit of the MT.
+// `bvh` follows. Throws std::logic_error when the report does not match the
+// MT (a piece already killed by something else, a part that still holds tets).
+CutRetraction retract_cut(engine::Mt& mt, engine::TetBvh& bvh, const MtChangeReport& cut,
+                          std::size_t fragments_before);
+
+// S after a retraction: every removed part replaced by the fragment it was
+// a part of, then closed under parents (a part that the level of detail had
+// left out may have had parents outside S).
+std::vector<FragId> retract_fragment_set(const engine::Mt& mt, std::span<const FragId> fragments,
+                                         const CutRetraction& retraction);
+// The frontier of that set over the MT as it is now.
+engine::Frontier retract_frontier(const engine::Mt& mt, const engine::Frontier& frontier,
+                                  const CutRetraction& retraction);
+
+// What the MT must satisfy for `cut` to be retracted: every piece alive or
+// killed by nothing else, every replaced tet dead, every fragment from
+// `fragments_before` on a part the cut made.
+engine::ValidationReport validate_retractable(const engine::Mt& mt, const MtChangeReport& cut,
+                                              std::size_t fragments_before);
+
+}  // namespace mtcut::cut
