@@ -159,7 +159,8 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     if (const auto retraction = cutter_.recut(mt_, bvh_, advance.ended, current)) {
       frontier_ = cut::retract_frontier(mt_, frontier_, *retraction);
       m.retracted_tets = retraction->killed.size();
-      if (m.cuts_started == 0) pieces_ = cut::find_pieces(mt_).count;  // the stroke left nothing to cut
+      if (m.cuts_started == 0 && retraction->fragments_removed > 0)
+        pieces_ = cut::find_pieces(mt_).count;  // the stroke left nothing to cut
     }
   }
   const cut::CutBudget budget = def_.cut_budget.unit == CutBudgetDef::Unit::kTets

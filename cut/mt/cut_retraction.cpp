@@ -58,7 +58,7 @@ engine::ValidationReport validate_retractable(const engine::Mt& mt, const MtChan
 }
 
 CutRetraction retract_cut(engine::Mt& mt, engine::TetBvh& bvh, const MtChangeReport& cut,
-                          std::size_t fragments_before) {
+                          std::size_t fragments_before, const engine::TetBvh::Mark* bvh_mark) {
   if (const auto report = validate_retractable(mt, cut, fragments_before); !report.ok())
     throw std::logic_error("retract_cut: " + report.problems.front());
   const PartMap parts(cut, fragments_before);
@@ -75,16 +75,17 @@ CutRetraction retract_cut(engine::Mt& mt, engine::TetBvh& bvh, const MtChangeRep
   }
   out.killed.reserve(cut.made_tets.size());
   for (TetId t : cut.made_tets) {
-    bvh.remove(t);
+    if (!bvh_mark) bvh.remove(t);
     mt.kill_tet(t);
     out.killed.push_back(t);
   }
   out.revived.reserve(cut.replaced.size());
   for (auto r = cut.replaced.rbegin(); r != cut.replaced.rend(); ++r) {
     mt.revive_tet(r->old, r->birth, parts.resolve(r->death));
-    bvh.insert(mt, r->old);
+    if (!bvh_mark) bvh.insert(mt, r->old);
     out.revived.push_back(r->old);
   }
+  if (bvh_mark) bvh.roll_back(*bvh_mark);
   while (mt.num_fragments() > fragments_before) {
     mt.remove_last_fragment();
     ++out.fragments_removed;

@@ -37,10 +37,12 @@ struct CutRetraction {
 // Undoes `cut`, every change a provisional cut made (all its calls' reports
 // appended, cut/mt/mt_change_report.h), started when the MT had
 // `fragments_before` fragments and followed by no other edit of the MT.
-// `bvh` follows. Throws std::logic_error when the report does not match the
-// MT (a piece already killed by something else, a part that still holds tets).
+// `bvh` follows: rolled back to `bvh_mark` (taken when the cut started,
+// with nothing but the cut editing the index since) when given, else edited
+// tet by tet. Throws std::logic_error when the report does not match the MT
+// (a piece already killed by something else, a part that still holds tets).
 CutRetraction retract_cut(engine::Mt& mt, engine::TetBvh& bvh, const MtChangeReport& cut,
-                          std::size_t fragments_before);
+                          std::size_t fragments_before, const engine::TetBvh::Mark* bvh_mark = nullptr);
 
 // S after a retraction: every removed part replaced by the fragment it was
 // a part of, then closed under parents (a part that the level of detail had

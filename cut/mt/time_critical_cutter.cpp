@@ -36,8 +36,10 @@ std::optional<CutRetraction> TimeCriticalCutter::retract(Mt& mt, TetBvh& bvh) {
   }
   if (!provisional_) return std::nullopt;
   if (active_ && active_->provisional) active_.reset();
-  CutRetraction out = retract_cut(mt, bvh, provisional_->changes, provisional_->fragments_before);
+  CutRetraction out =
+      retract_cut(mt, bvh, provisional_->changes, provisional_->fragments_before, &provisional_->bvh_mark);
   provisional_.reset();
+  pieces_stale_ = pieces_stale_ || out.fragments_removed > 0;
   return out;
 }
 
@@ -72,7 +74,7 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   a.provisional = q.provisional;
   if (q.provisional) {
     provisional_queued_ = false;
-    provisional_.emplace(Provisional{mt.num_fragments(), {}});
+    provisional_.emplace(Provisional{mt.num_fragments(), {}, bvh.mark()});
   }
   a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def_.cut, table_, &workspace_);
   const auto jobs = a.cut->jobs();
@@ -107,6 +109,7 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
       const std::size_t job = a.order[a.next++];
       const std::size_t before = result.changes.made_vertices.size();
       spent += a.cut->job_cost(mt, job);
+      const std::size_t splits = result.changes.fragment_splits.size();
       if (a.provisional) {
         MtChangeReport changes;
         a.cut->process(mt, bvh, job, changes);
@@ -115,6 +118,7 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
       } else {
         a.cut->process(mt, bvh, job, result.changes);
       }
+      pieces_stale_ = pieces_stale_ || result.changes.fragment_splits.size() > splits;
       ++jobs;
       if (result.changes.made_vertices.size() > before && !queue_.empty()) {
         extend_geometry(std::span<const MadeVertex>(result.changes.made_vertices).subspan(before));
@@ -124,7 +128,10 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     active_.reset();
     ++result.cuts_finished;
     ++totals_.cuts_finished;
-    if (def_.report_pieces) result.pieces = find_pieces(mt);
+    if (def_.report_pieces && pieces_stale_) {
+      result.pieces = find_pieces(mt);
+      pieces_stale_ = false;
+    }
   }
   totals_.total_jobs_done += jobs;
   totals_.seconds += std::chrono::duration<double>(Clock::now() - start).count();

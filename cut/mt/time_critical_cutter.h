@@ -101,7 +101,9 @@ class TimeCriticalCutter {
 
   // Processes jobs within `budget`, visible fragments of `frontier` first
   // (frontier: the World's, mapped after every call). Returns what changed;
-  // `pieces` is filled when the call finished a cut and def.report_pieces.
+  // `pieces` is filled when the call finished a cut, def.report_pieces and
+  // the pieces may have changed since they were last counted (a fragment
+  // split, or a retraction that merged parts).
   struct RunResult {
     MtChangeReport changes;
     std::size_t cuts_finished = 0;
@@ -142,9 +144,13 @@ class TimeCriticalCutter {
   struct Provisional {
     std::size_t fragments_before = 0;
     MtChangeReport changes;
+    engine::TetBvh::Mark bvh_mark;  // the index when it started: retracting rolls it back
   };
   std::optional<Provisional> provisional_;
   bool provisional_queued_ = false;  // the queue's last entry is provisional
+  // A fragment split or a retraction merged parts since pieces were last
+  // counted: the next finished cut counts them (else it reports none).
+  bool pieces_stale_ = true;
   CutterProgress totals_;
 };
 

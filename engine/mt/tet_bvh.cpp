@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <stdexcept>
 #include <string>
 
 #include "engine/mt/frontier.h"
@@ -77,6 +78,46 @@ void TetBvh::rebuild(const Mt& mt) {
         slot_leaf_[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(n);
   indexed_ = ids.size();
   edits_ = 0;
+  marking_ = false;
+  removed_since_mark_.clear();
+}
+
+TetBvh::Mark TetBvh::mark() {
+  marking_ = true;
+  removed_since_mark_.clear();
+  return {extra_tet_.size(), indexed_, edits_, ++mark_generation_};
+}
+
+void TetBvh::roll_back(const Mark& m) {
+  if (!marking_ || m.generation != mark_generation_ || m.extra > extra_tet_.size())
+    throw std::logic_error("TetBvh::roll_back: not the index's current mark");
+  // Entries inserted since the mark leave their leaves' lists (they were
+  // pushed on the lists' heads) and the arrays.
+  for (std::size_t e = extra_tet_.size(); e-- > m.extra;) {
+    const std::int32_t t = extra_tet_[e];
+    if (t >= 0) where_[static_cast<std::size_t>(t)] = -1;
+    std::int32_t& head = extra_head_[static_cast<std::size_t>(extra_leaf_[e])];
+    while (head >= static_cast<std::int32_t>(m.extra)) head = extra_next_[static_cast<std::size_t>(head)];
+  }
+  extra_tet_.resize(m.extra);
+  extra_next_.resize(m.extra);
+  extra_leaf_.resize(m.extra);
+  // Tets removed since the mark go back where they were.
+  for (auto it = removed_since_mark_.rbegin(); it != removed_since_mark_.rend(); ++it) {
+    const auto [t, w] = *it;
+    if (w >= 0) {
+      slot_tet_[static_cast<std::size_t>(w)] = t;
+    } else if (static_cast<std::size_t>(-w - 2) < m.extra) {
+      extra_tet_[static_cast<std::size_t>(-w - 2)] = t;
+    } else {
+      continue;  // inserted after the mark: gone with it
+    }
+    where_[static_cast<std::size_t>(t)] = w;
+  }
+  indexed_ = m.indexed;
+  edits_ = m.edits;
+  marking_ = false;
+  removed_since_mark_.clear();
 }
 
 std::size_t TetBvh::bytes() const {
@@ -111,6 +152,7 @@ TetId TetBvh::locate_in(const Mt& mt, const Frontier& frontier, const Vec3& p) c
 void TetBvh::remove(TetId t) {
   if (t.index() >= where_.size() || where_[t.index()] == -1) return;
   const std::int32_t w = where_[t.index()];
+  if (marking_) removed_since_mark_.emplace_back(t.value, w);
   if (w >= 0) {
     slot_tet_[static_cast<std::size_t>(w)] = -1;
   } else {

@@ -111,6 +111,21 @@ class TetBvh {
   // so that a cut that knows what it adds grows each array once.
   void reserve(std::size_t tets, std::size_t insertions);
 
+  // A point to roll the index back to: every edit from mark() on is undone
+  // by roll_back() (removed tets back in their slots, inserted ones dropped,
+  // boxes left as grown), as when the MT is edited and then restored
+  // exactly (cut/mt/cut_retraction.h). Insertions are appended, so taking
+  // them back leaves no wear. One mark at a time; a rebuild forgets it.
+  struct Mark {
+    std::size_t extra = 0, indexed = 0, edits = 0;
+    std::uint64_t generation = 0;
+  };
+  Mark mark();
+  // Undoes the edits since `m` (the MT must be back to the tets it had then).
+  // Throws std::logic_error when `m` is not the mark held.
+  void roll_back(const Mark& m);
+  bool marked() const { return marking_; }
+
   // The edits since the last rebuild outnumber half the indexed tets:
   // queries have slowed down enough that a rebuild pays for itself.
   bool worn() const { return edits_ > indexed_ / 2 + 64; }
@@ -154,6 +169,10 @@ class TetBvh {
   std::vector<std::int32_t> where_;       // (n_tets) slot >= 0, extra e as -(e + 2), -1 = not indexed
   std::size_t indexed_ = 0;
   std::size_t edits_ = 0;  // removals and insertions since the last rebuild
+  // While marked: (tet, where_ entry) of every tet removed since the mark.
+  bool marking_ = false;
+  std::uint64_t mark_generation_ = 0;
+  std::vector<std::pair<std::int32_t, std::int32_t>> removed_since_mark_;
 };
 
 }  // namespace mtcut::engine

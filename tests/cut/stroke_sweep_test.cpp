@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace mtcut::cut {
@@ -54,26 +55,39 @@ TEST(StrokeSweep, BladeThatDoesNotMoveCutsNothing) {
   EXPECT_TRUE(stroke.finish().empty());
 }
 
-TEST(StrokeSweep, TurnEndsThePartAndTheNextOverlapsItByHalfASweep) {
+// The polygon among `polygons` nearest x: its plane's distance when x
+// projects inside it, else infinity.
+double distance_to_cut(const std::vector<CutPolygon>& polygons, const Vec3& x) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const CutPolygon& p : polygons)
+    if (p.projects_inside(x) >= 0) best = std::min(best, std::abs(p.signed_distance(x)));
+  return best;
+}
+
+TEST(StrokeSweep, TurnEndsThePartAndTheNextOverlapsIt) {
   StrokeSweep stroke;
   // Along +y in the plane x = 0, then along +x in the plane y = 1.
   for (int f = 0; f <= 10; ++f) EXPECT_TRUE(stroke.add(Vec3(0, 0.1 * f, 1), Vec3(0, 0.1 * f, 0)).empty());
-  const auto first = stroke.add(Vec3(0.1, 1.0, 1), Vec3(0.1, 1.0, 0));
-  ASSERT_EQ(first.size(), 1u);
-  EXPECT_NEAR(area(first[0]), 1.0, 1e-12);
-  EXPECT_NEAR(std::abs(first[0].normal().x()), 1.0, 1e-12);
-  // The part in progress: from the pose midway between the first part's last
-  // two (y = 0.95) through the turn.
+  std::vector<CutPolygon> polygons = stroke.add(Vec3(0.1, 1.0, 1), Vec3(0.1, 1.0, 0));
+  ASSERT_EQ(polygons.size(), 1u);
+  EXPECT_NEAR(area(polygons[0]), 1.0, 1e-12);
+  EXPECT_NEAR(std::abs(polygons[0].normal().x()), 1.0, 1e-12);
+  // The part in progress starts half a sweep back (y = 0.95), then the
+  // first part's last pose, then the new one.
   ASSERT_TRUE(stroke.current().has_value());
   EXPECT_EQ(stroke.part_poses(), 3u);
-  for (int f = 2; f <= 10; ++f) EXPECT_TRUE(stroke.add(Vec3(0.1 * f, 1.0, 1), Vec3(0.1 * f, 1.0, 0)).empty());
-  const auto second = stroke.finish();
-  ASSERT_EQ(second.size(), 1u);
-  // From x = 0, the turn's corner: nothing between the parts is left uncut.
-  // Its plane leans by the half sweep back along y (0.05 over 1 along x).
-  EXPECT_NEAR(area(second[0]), 1.0, 2e-3);
-  EXPECT_NEAR(std::abs(second[0].normal().y()), 1.0, 2e-3);
+  for (int f = 2; f <= 10; ++f)
+    for (auto& p : stroke.add(Vec3(0.1 * f, 1.0, 1), Vec3(0.1 * f, 1.0, 0))) polygons.push_back(std::move(p));
+  for (auto& p : stroke.finish()) polygons.push_back(std::move(p));
   EXPECT_FALSE(stroke.current().has_value());
+  // The last part runs along y = 1 to x = 1; the path's every point, the
+  // corner too, lies on some polygon (nothing between parts is left uncut).
+  EXPECT_NEAR(std::abs(polygons.back().normal().y()), 1.0, 1e-3);
+  for (int i = 0; i <= 40; ++i) {
+    const double s = i / 20.0;  // along the L
+    const Vec3 x = s <= 1 ? Vec3(0, s, 0.5) : Vec3(s - 1, 1, 0.5);
+    EXPECT_LT(distance_to_cut(polygons, x), 1e-3) << "s = " << s;
+  }
 }
 
 TEST(StrokeSweep, CurvedStrokeInOnePlaneIsSplitWhereItStopsBeingConvex) {

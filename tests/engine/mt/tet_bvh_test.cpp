@@ -160,6 +160,41 @@ TEST(TetBvh, ReservedRoomTakesTheEditsWithoutGrowing) {
   for (const Vec3& p : random_points(mt, 150, 21)) ASSERT_EQ(bvh_containing(mt, bvh, p), brute_force_containing(mt, p));
 }
 
+// Edits after a mark, the MT then restored (the pieces killed, the split
+// tets revived), and the index rolled back: exact again, and no wear left.
+TEST(TetBvh, RollBackUndoesTheEditsSinceTheMark) {
+  Mt mt = test_mt("box");  // a copy to edit
+  TetBvh bvh(mt);
+  std::mt19937 rng(5);
+  for (int round = 0; round < 3; ++round) {
+    const std::size_t tets_before = mt.num_tets();
+    const TetBvh::Mark mark = bvh.mark();
+    std::vector<std::pair<TetId, std::array<FragId, 2>>> split;
+    std::vector<TetId> made;
+    for (int k = 0; k < 60; ++k) {
+      TetId t(static_cast<std::size_t>(rng() % tets_before));  // tets of before the mark
+      while (!mt.alive(t)) t = TetId(static_cast<std::size_t>(rng() % tets_before));
+      const std::array<FragId, 2> fragments{mt.birth(t), mt.death(t)};
+      const auto pieces = split_at_centroid(mt, t);
+      bvh.replace(mt, t, pieces);
+      split.emplace_back(t, fragments);
+      made.insert(made.end(), pieces.begin(), pieces.end());
+    }
+    ASSERT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
+    for (TetId t : made)
+      if (mt.alive(t)) mt.kill_tet(t);
+    for (auto it = split.rbegin(); it != split.rend(); ++it)
+      if (!mt.alive(it->first)) mt.revive_tet(it->first, it->second[0], it->second[1]);
+    bvh.roll_back(mark);
+    ASSERT_TRUE(bvh.validate(mt).ok()) << "round " << round << ": " << bvh.validate(mt).summary();
+    EXPECT_FALSE(bvh.worn());
+    EXPECT_FALSE(bvh.marked());
+    EXPECT_THROW(bvh.roll_back(mark), std::logic_error);
+    for (const Vec3& p : random_points(mt, 100, 40 + static_cast<unsigned>(round)))
+      ASSERT_EQ(bvh_containing(mt, bvh, p), brute_force_containing(mt, p));
+  }
+}
+
 TEST(TetBvh, ValidateFindsAnIndexThatMissedAnEdit) {
   Mt mt = test_mt("box");
   TetBvh bvh(mt);

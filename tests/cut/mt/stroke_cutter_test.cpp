@@ -1,0 +1,218 @@
+// Scalpel strokes cut progressively (cut/mt/stroke_cutter.h): a blade pose a
+// step, the stroke's straight parts cut for good as they end and the part
+// in progress cut provisionally, the last step's provisional cut taken back
+// first (cut/mt/cut_retraction.h). After every step the MT, its BVH, the
+// cutter and a frontier that follows the cuts are valid.
+#include "cut/mt/stroke_cutter.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <functional>
+#include <random>
+
+#include "cut/mt/mt_pieces.h"
+#include "tests/cut/mt/mt_cut_test_util.h"
+
+namespace mtcut::test {
+namespace {
+
+// A blade pose at s in [0, 1] of a stroke.
+using Path = std::function<cut::BladePose(double s)>;
+
+struct StrokeOutcome {
+  Mt mt;
+  std::size_t pieces = 0;
+  std::vector<CutPolygon> swept;  // the quads between consecutive poses
+  bool valid = true;
+};
+
+// Cuts `path` in `steps` steps (a pose each, then one that disengages),
+// validating after every step.
+StrokeOutcome cut_progressively(const Mt& original, const Path& path, int steps, const std::string& where) {
+  StrokeOutcome out{original, 0, {}, true};
+  Mt& mt = out.mt;
+  engine::TetBvh bvh(mt);
+  Frontier frontier = Frontier::coarsest(mt);
+  cut::StrokeSweep stroke;
+  cut::TimeCriticalCutter cutter;
+  for (int k = 0; k <= steps + 1 && out.valid; ++k) {
+    const std::string at = where + " step " + std::to_string(k);
+    cut::BladePose pose = path(std::min(1.0, static_cast<double>(k) / steps));
+    pose.engaged = k <= steps;
+    if (k > 0 && k <= steps) {
+      const cut::BladePose last = path(static_cast<double>(k - 1) / steps);
+      if ((last.base - pose.base).norm() > 0 || (last.tip - pose.tip).norm() > 0)
+        out.swept.push_back(CutPolygon::from_points({last.base, pose.base, pose.tip, last.tip}));
+    }
+    const cut::StrokeStep step = cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, std::span(&pose, 1));
+    if (!step.recut) continue;
+    EXPECT_FALSE(cutter.frozen()) << at;
+    for (const auto& report : {mt.validate(), bvh.validate(mt), engine::validate_frontier(mt, frontier),
+                               cutter.validate(mt)}) {
+      EXPECT_TRUE(report.ok()) << at << ": " << report.summary();
+      out.valid = out.valid && report.ok();
+    }
+  }
+  EXPECT_FALSE(cutter.provisional_held()) << where;
+  out.pieces = cut::find_pieces(mt).count;
+  return out;
+}
+
+// The same stroke with all its poses in one step: each straight part cut
+// once, at the end.
+Mt cut_at_once(const Mt& original, const Path& path, int steps) {
+  Mt mt = original;
+  engine::TetBvh bvh(mt);
+  Frontier frontier = Frontier::coarsest(mt);
+  cut::StrokeSweep stroke;
+  cut::TimeCriticalCutter cutter;
+  std::vector<cut::BladePose> poses;
+  for (int k = 0; k <= steps; ++k) poses.push_back(path(static_cast<double>(k) / steps));
+  cut::BladePose away = poses.back();
+  away.engaged = false;
+  poses.push_back(away);
+  cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, poses);
+  return mt;
+}
+
+// A vertical blade across the box along y at x = box x + `at` of its width,
+// from above the top down to `depth` of the height (past the bottom for
+// depth > 1), with `wobble` (x = at + wobble(s)).
+Path across(const Mt& mt, double at, double depth, std::function<double(double)> wobble = {}) {
+  const engine::Aabb box = mt_box(mt);
+  return [box, at, depth, wobble](double s) {
+    const Vec3 size = box.hi - box.lo;
+    const double x = box.lo.x() + (at + (wobble ? wobble(s) : 0.0)) * size.x();
+    const double y = box.lo.y() - 0.05 * size.y() + 1.1 * s * size.y();
+    return cut::BladePose{Vec3(x, y, box.hi.z() + 0.05 * size.z()), Vec3(x, y, box.hi.z() - depth * size.z()), true};
+  };
+}
+
+double volume_of_pieces(const Mt& mt) {
+  double v = 0;
+  for (double p : cut::piece_volumes(mt, cut::find_pieces(mt))) v += p;
+  return v;
+}
+
+// A straight stroke is one part: cut in any number of steps it ends as the
+// one cut of its polygon, tet for tet (each tet split once from its
+// original), and a stroke through the whole depth separates the object.
+TEST(StrokeCutter, StraightStrokesEndAsTheOneCutOfTheirPolygon) {
+  for (const std::string name : {"ellipsoid", "liver", "box"}) {
+    const Mt& original = cut_test_mt(name);
+    for (const double depth : {0.6, 1.1}) {
+      const Path path = across(original, 0.5137, depth);
+      for (const int steps : {24, 96}) {
+        const auto once = canonical_mt(cut_at_once(original, path, steps));
+        const std::string where = name + " depth " + std::to_string(depth) + ", " + std::to_string(steps) + " steps";
+        const StrokeOutcome r = cut_progressively(original, path, steps, where);
+        if (!r.valid) return;
+        EXPECT_TRUE(canonical_mt(r.mt) == once) << where;
+        if (depth > 1) {
+          EXPECT_EQ(r.pieces, 2u) << where;
+          EXPECT_NEAR(volume_of_pieces(r.mt), original.fine_volume(), 1e-9 * original.fine_volume()) << where;
+        }
+      }
+    }
+  }
+}
+
+// Curved, wavy and L-shaped strokes, through and with the tip inside: every
+// step leaves the MT valid, and in the end no finest tet is properly
+// crossed by what the blade swept.
+TEST(StrokeCutter, TurningStrokesKeepTheMtValid) {
+  const auto curved = [](double s) { return 0.3 * s * s; };
+  const auto wavy = [](double s) { return 0.08 * std::sin(9.0 * s); };
+  const auto l_turn = [](double s) { return s < 0.5 ? 0.0 : 0.8 * (s - 0.5); };
+  for (const std::string name : {"ellipsoid", "liver", "box"}) {
+    const Mt& original = cut_test_mt(name);
+    for (const auto& [shape, wobble] : {std::pair<std::string, std::function<double(double)>>{"curved", curved},
+                                        {"wavy", wavy}, {"l_turn", l_turn}}) {
+      for (const double depth : {0.6, 1.1}) {
+        for (const int steps : {24, 96}) {
+          const std::string where =
+              name + " " + shape + " depth " + std::to_string(depth) + ", " + std::to_string(steps) + " steps";
+          const StrokeOutcome r = cut_progressively(original, across(original, 0.4137, depth, wobble), steps, where);
+          if (!r.valid) return;
+          engine::TetBvh bvh(r.mt);
+          const Frontier finest = Frontier::finest(r.mt);
+          for (const CutPolygon& quad : r.swept)
+            EXPECT_EQ(properly_crossed_tets(r.mt, finest, quad, longest_edge_near(r.mt, bvh, quad)), 0u) << where;
+          std::printf("[ report   ] %s: %zu pieces\n", where.c_str(), r.pieces);
+        }
+      }
+    }
+  }
+}
+
+// MTs of six meshes for the random strokes: the builtin shapes, shared
+// surfaces meshed by TetGen and a shared tet mesh.
+const Mt& property_mt(const std::string& spec) {
+  static std::map<std::string, Mt> cache;
+  auto it = cache.find(spec);
+  if (it != cache.end()) return it->second;
+  engine::MeshLoadDef def;
+  def.builtin_tets = 1500;
+  const auto mesh = engine::load_mesh(spec, def).mesh;
+  return cache.emplace(spec, engine::build_mt(mesh, engine::MtBuildOptions{})).first->second;
+}
+
+// How many random strokes: MTCUT_STROKES (default 200).
+int stroke_count() {
+  const char* env = std::getenv("MTCUT_STROKES");
+  return env ? std::max(1, std::atoi(env)) : 200;
+}
+
+// Random strokes: 1 to 3 straight legs in random directions across the
+// object's box, a random depth (the tip inside or through), 20 to 120 steps
+// (1,000 for one stroke in 50): valid after every step. A one-leg stroke
+// through the whole depth ends as the one cut of its polygon.
+TEST(StrokeCutter, RandomStrokesKeepTheMtValid) {
+  const std::vector<std::string> specs = {"builtin:ellipsoid", "builtin:box", "builtin:cylinder",
+                                          shared_mesh("liver.msh"), shared_mesh("torus.obj"),
+                                          shared_mesh("Armadillo_Tetra_4406.vtu")};
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int strokes = stroke_count();
+  int one_leg_through = 0;
+  for (int i = 0; i < strokes; ++i) {
+    const std::string spec = specs[static_cast<std::size_t>(i) % specs.size()];
+    const Mt& original = property_mt(spec);
+    const engine::Aabb box = mt_box(original);
+    const Vec3 size = box.hi - box.lo;
+    const int legs = 1 + static_cast<int>(u(rng) * 3);
+    const double depth = 0.3 + 0.9 * u(rng);
+    const int steps = i % 50 == 49 ? 1000 : 20 + static_cast<int>(u(rng) * 100);
+    // The blade's foot path: a polyline from outside the box across it.
+    std::vector<Vec3> corners;
+    const double a0 = 2 * M_PI * u(rng);
+    Vec3 p = box.center() - 0.75 * size.norm() * Vec3(std::cos(a0), std::sin(a0), 0);
+    corners.push_back(p);
+    double heading = a0 + (u(rng) - 0.5) * 0.6;
+    for (int l = 0; l < legs; ++l) {
+      p += 1.5 * size.norm() / legs * Vec3(std::cos(heading), std::sin(heading), 0);
+      corners.push_back(p);
+      heading += (u(rng) - 0.5) * 2.0;  // up to a turn of one radian either way
+    }
+    const double top = box.hi.z() + 0.05 * size.z(), bottom = box.hi.z() - depth * size.z();
+    const Path path = [corners, top, bottom](double s) {
+      const double t = s * static_cast<double>(corners.size() - 1);
+      const std::size_t k = std::min(corners.size() - 2, static_cast<std::size_t>(t));
+      const Vec3 q = corners[k] + (t - static_cast<double>(k)) * (corners[k + 1] - corners[k]);
+      return cut::BladePose{Vec3(q.x(), q.y(), top), Vec3(q.x(), q.y(), bottom), true};
+    };
+    const std::string where = "stroke " + std::to_string(i) + " on " + spec + ": " + std::to_string(legs) +
+                              " legs, depth " + std::to_string(depth) + ", " + std::to_string(steps) + " steps";
+    const StrokeOutcome r = cut_progressively(original, path, steps, where);
+    ASSERT_TRUE(r.valid) << where;
+    if (legs == 1 && depth > 1.0) {
+      ++one_leg_through;
+      EXPECT_TRUE(canonical_mt(r.mt) == canonical_mt(cut_at_once(original, path, steps))) << where;
+    }
+  }
+  std::printf("[ report   ] %d random strokes, %d of one leg through the whole depth\n", strokes, one_leg_through);
+}
+
+}  // namespace
+}  // namespace mtcut::test
