@@ -180,7 +180,7 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
     // starts midway between the last two poses, then the last pose.
     out = close_part();
     const Blade last = blades_.back();
-    const Blade& before = blades_[blades_.size() - 2];
+    const Blade before = blades_[blades_.size() - 2];
     clear_part();
     start_with(Blade(0.5 * (before.first + last.first), 0.5 * (before.second + last.second)));
     start_with(last);

@@ -214,9 +214,11 @@ std::vector<ScalpelPose> l_stroke() {
 
 // Runs the frames (each a list of poses), validating after each, then
 // frames with the blade lifted until the cutter's queue drains; returns the
-// rest positions of the MT vertices the cuts made.
-std::vector<Vec3> made_vertices(const std::vector<std::vector<ScalpelPose>>& frames) {
-  World world(organ_mt(2000), organ_def());
+// rest positions of the MT vertices the cuts made that live tets use (a
+// retracted provisional cut's are left unused).
+std::vector<Vec3> made_vertices(const std::vector<std::vector<ScalpelPose>>& frames,
+                                const WorldDef& def = organ_def()) {
+  World world(organ_mt(2000), def);
   const std::size_t before = world.mt().num_vertices();
   for (const auto& poses : frames) {
     world.step(poses);
@@ -228,8 +230,14 @@ std::vector<Vec3> made_vertices(const std::vector<std::vector<ScalpelPose>>& fra
   EXPECT_FALSE(world.cutter().frozen());
   EXPECT_TRUE(world.validate().ok());
   EXPECT_EQ(world.nan_events(), 0u);
-  return std::vector<Vec3>(world.mt().positions().begin() + static_cast<std::ptrdiff_t>(before),
-                           world.mt().positions().end());
+  std::vector<char> used(world.mt().num_vertices(), 0);
+  for (std::size_t t = 0; t < world.mt().num_tets(); ++t)
+    if (world.mt().alive(engine::TetId(t)))
+      for (engine::VertId v : world.mt().tet(engine::TetId(t))) used[v.index()] = 1;
+  std::vector<Vec3> out;
+  for (std::size_t v = before; v < used.size(); ++v)
+    if (used[v]) out.push_back(world.mt().position(engine::VertId(v)));
+  return out;
 }
 
 // Made vertices near the middle of the first leg (the plane x = 4 cm) and of
@@ -255,6 +263,75 @@ TEST(World, AStrokeThatTurnsWithinOneFrameIsCutAlongBothLegsNotItsChord) {
   const auto [first, second] = near_legs(polyline);
   EXPECT_GT(first, 0) << "the first leg was not cut";
   EXPECT_GT(second, 0) << "the second leg was not cut";
+}
+
+// The same L at 2 mm a frame, without gravity (the tissue stays where it
+// rests, so its cut vertices lie on the legs in rest space too): each leg is
+// cut while the blade moves along it (the part in progress provisionally),
+// and both are cut in the end.
+TEST(World, AStrokeThatTurnsAcrossFramesIsCutAlongBothLegs) {
+  std::vector<std::vector<ScalpelPose>> frames;
+  for (int k = 0; k <= 30; ++k) frames.push_back({blade_at(0.04, -0.06 + 0.06 * k / 30)});
+  for (int k = 1; k <= 30; ++k) frames.push_back({blade_at(0.04 - 0.06 * k / 30, 0.0)});
+  WorldDef def = organ_def();
+  def.environment.gravity = Vec3::Zero();
+  const auto [first, second] = near_legs(made_vertices(frames, def));
+  EXPECT_GT(first, 0) << "the first leg was not cut";
+  EXPECT_GT(second, 0) << "the second leg was not cut";
+}
+
+// The default scenario's stroke, one pose a frame: the incision shows on the
+// frontier in the frames the blade is in the tissue (from frame 10 on; it
+// enters the ellipsoid at y = -4.6 cm, frame 8), grows with the blade in at
+// least 90% of them, and the flap comes off within two frames of the blade's
+// exit from the mesh. Every frame is valid: MT, frontier, BVH, cutter and
+// springs.
+TEST(World, TheIncisionOpensBehindTheBladeEveryFrame) {
+  WorldDef def = organ_def();
+  def.environment.floor = Plane{Vec3(0, 0, 1), -0.036};  // as the default scenario's: the organ lies on it
+  World world(organ_mt(8000), def);
+  const ScalpelPath path(std::vector<ScalpelKeyframe>{
+      {0.0, {Vec3(0.03, -0.06, 0.06), Vec3(0.03, -0.06, -0.07), true}},
+      {1.0, {Vec3(0.03, 0.06, 0.06), Vec3(0.03, 0.06, -0.07), true}},
+      {1.001, {Vec3(0.03, 0.06, 0.06), Vec3(0.03, 0.06, -0.07), false}}});
+  // The frame at whose start the blade (y = -6 cm + 12 cm/s) has passed the
+  // mesh's last vertex near its plane x = 3 cm.
+  double exit_y = -1;
+  for (const Vec3& p : world.mt().positions())
+    if (std::abs(p.x() - 0.03) < 0.004) exit_y = std::max(exit_y, p.y());
+  const int exit_frame = static_cast<int>(std::ceil((exit_y + 0.06) / 0.12 * 60.0)) + 1;
+  const std::size_t original = world.mt().num_vertices();
+  const auto cut_vertices_shown = [&] {
+    std::size_t n = 0;
+    for (engine::VertId v : world.frontier().vertices()) n += v.index() >= original;
+    return n;
+  };
+  std::size_t grew = 0, inside = 0, last = 0;
+  int separated_at = -1;
+  for (int f = 1; f <= 70; ++f) {
+    const FrameMetrics& m = world.step(path.pose_at(world.time()));
+    const auto report = world.validate();
+    ASSERT_TRUE(report.ok()) << "frame " << f << ": " << report.summary();
+    const std::size_t shown = cut_vertices_shown();
+    if (f == 10) {
+      EXPECT_GT(shown, 0u) << "no incision on the frontier at frame 10";
+      EXPECT_GT(m.provisional_tets, 0u);
+    }
+    if (f >= 10 && f < exit_frame) {
+      ++inside;
+      grew += m.cut_vertices > last;
+    }
+    last = m.cut_vertices;
+    if (separated_at < 0 && world.pieces() == 2) separated_at = f;
+  }
+  EXPECT_GE(grew * 10, inside * 9) << grew << " of " << inside << " frames in the tissue grew the incision";
+  EXPECT_GE(separated_at, exit_frame - 6) << "the flap came off before the blade reached the end";
+  EXPECT_LE(separated_at, exit_frame + 2) << "the flap came off late";
+  EXPECT_EQ(world.pieces(), 2u);
+  EXPECT_EQ(world.nan_events(), 0u);
+  ASSERT_EQ(world.strokes().size(), 1u);
+  EXPECT_TRUE(world.strokes()[0].finished);
+  EXPECT_EQ(world.last_frame().provisional_tets, 0u);
 }
 
 // The frontier's tets, ascending.
