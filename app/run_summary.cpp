@@ -92,6 +92,9 @@ nlohmann::ordered_json summarize_run(const ScenarioDef& scenario, const RunRecor
   out["frame_ms_mean"] = figure(frame_dist, "mean");
   out["frame_ms_p99"] = figure(frame_dist, "p99");
   out["nan_events"] = world.nan_events();
+  // Cuts the cutter took back because they would have broken the MT
+  // (cut/mt/cut_guard.h): that part of a stroke's incision does not show.
+  out["cuts_refused"] = world.cutter().cuts_refused();
   // The first frame (as metrics.csv numbers them) whose frontier shows a cut.
   out["first_cut_frame"] = nullptr;
   for (const MetricsRow& r : record.rows)

@@ -199,8 +199,11 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
 
 StrokeAdvance StrokeSweep::advance(std::span<const BladePose> poses) {
   StrokeAdvance out;
+  if (!blades_.empty()) out.swept.extend(blades_.back().first), out.swept.extend(blades_.back().second);
   for (const BladePose& pose : poses) {
     std::vector<CutPolygon> ended;
+    out.swept.extend(pose.base);
+    out.swept.extend(pose.tip);
     if (pose.engaged) {
       out.moved = out.moved || blades_.empty() || pose.base != blades_.back().first || pose.tip != blades_.back().second;
       ended = add(pose.base, pose.tip);

@@ -52,6 +52,7 @@ struct BladePose {
 struct StrokeAdvance {
   std::vector<CutPolygon> ended;  // polygons of the parts that ended, in order
   bool moved = false;             // the part in progress changed, or the stroke ended
+  engine::Aabb swept;             // box of the blade's poses this frame and the one before them
 };
 
 class StrokeSweep {

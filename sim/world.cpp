@@ -137,7 +137,12 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   cut::StrokeAdvance advance = stroke_.advance(blades);
   if (!was_active && (stroke_.active() || !advance.ended.empty()))
     strokes_.push_back({frame_, frame_, mt_.num_live_tets(), mt_.num_live_tets(), false});
-  const bool recut = advance.moved || !advance.ended.empty();
+  // A blade moving outside the tissue (its sweep's box clear of the
+  // particles') leaves the part's cut as it is.
+  engine::Aabb tissue;
+  for (const Vec3& x : state_.x) tissue.extend(x);
+  const bool recut = !advance.ended.empty() || (advance.moved && advance.swept.overlaps(tissue)) ||
+                     (cutter_.provisional_held() && !stroke_.active());
   if (!recut && !cutter_.frozen()) return;
   take_lod_move(m);  // the MT is about to change
   DeformationSnapshot snapshot = take_snapshot(mt_, frontier_, model_, state_);
@@ -169,6 +174,11 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   auto result = cutter_.run(mt_, bvh_, frontier_, budget);
   cut::follow_cut(mt_, frontier_, result.changes);
   cut_vertices_ += result.changes.made_vertices.size();
+  if (result.refused) {  // the cut would have broken the MT (cut_guard.h): taken back
+    frontier_ = cut::retract_frontier(mt_, frontier_, *result.refused);
+    cut_vertices_ -= result.refused_reported_vertices;
+    ++m.cuts_refused;
+  }
   if (!strokes_.empty() && !strokes_.back().finished) {
     StrokeRecord& stroke = strokes_.back();
     stroke.last_frame = frame_;

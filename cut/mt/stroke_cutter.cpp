@@ -14,6 +14,7 @@ StrokeStep cut_stroke_step(StrokeSweep& stroke, TimeCriticalCutter& cutter, Mt& 
   if (out.recut || cutter.frozen()) {
     out.run = cutter.run(mt, bvh, frontier, budget);
     follow_cut(mt, frontier, out.run.changes);
+    if (out.run.refused) frontier = retract_frontier(mt, frontier, *out.run.refused);
   }
   return out;
 }

@@ -5,7 +5,7 @@
 // time-critical cutter takes the last provisional cut back and queues the
 // ended parts for good and the part in progress provisionally
 // (TimeCriticalCutter::recut), then runs within the budget, and the
-// frontier follows. The World does the same with the polygons carried to
+// frontier follows (through a refused cut's retraction too). The World does the same with the polygons carried to
 // rest space and the simulated state carried over (sim/world.h); the tests
 // and `mtcut bench stroke` cut with this.
 

@@ -1,5 +1,7 @@
 #include "cut/mt/time_critical_cutter.h"
 
+#include "cut/mt/cut_guard.h"
+
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
@@ -34,13 +36,23 @@ std::optional<CutRetraction> TimeCriticalCutter::retract(Mt& mt, TetBvh& bvh) {
     queue_.pop_back();
     provisional_queued_ = false;
   }
-  if (!provisional_) return std::nullopt;
-  if (active_ && active_->provisional) active_.reset();
-  CutRetraction out =
-      retract_cut(mt, bvh, provisional_->changes, provisional_->fragments_before, &provisional_->bvh_mark);
-  provisional_.reset();
+  std::optional<Transaction> tx;
+  if (active_ && active_->provisional) {
+    tx = std::move(active_->tx);
+    active_.reset();
+  } else if (held_) {
+    tx = std::move(held_);
+    held_.reset();
+  }
+  if (!tx) return std::nullopt;
+  CutRetraction out = retract_cut(mt, bvh, tx->changes, tx->fragments_before, &tx->bvh_mark);
   pieces_stale_ = pieces_stale_ || out.fragments_removed > 0;
   return out;
+}
+
+const MtChangeReport* TimeCriticalCutter::provisional_changes() const {
+  if (active_ && active_->provisional) return &active_->tx.changes;
+  return held_ ? &held_->changes : nullptr;
 }
 
 std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
@@ -72,10 +84,9 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   bvh.refresh(mt);  // between two cuts: the index edits of the last one never rebuild mid-cut
   Active a;
   a.provisional = q.provisional;
-  if (q.provisional) {
-    provisional_queued_ = false;
-    provisional_.emplace(Provisional{mt.num_fragments(), {}, bvh.mark()});
-  }
+  if (q.provisional) provisional_queued_ = false;
+  first_cut_vertex_ = std::min(first_cut_vertex_, mt.num_vertices());
+  a.tx = Transaction{mt.num_fragments(), mt.num_vertices(), {}, bvh.mark()};
   a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def_.cut, table_, &workspace_);
   const auto jobs = a.cut->jobs();
   for (std::size_t j = 0; j < jobs.size(); ++j)
@@ -103,31 +114,40 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
       result.changes.counts.find_seconds += active_->cut->find_seconds();
     }
     Active& a = *active_;
+    MtChangeReport call;  // this call's changes of the active cut
     while (a.next < a.order.size()) {
       const bool in_visible = a.next < a.visible && a.next > 0;
       if (!(def_.visible_at_once && in_visible) && over_budget()) break;
       const std::size_t job = a.order[a.next++];
-      const std::size_t before = result.changes.made_vertices.size();
       spent += a.cut->job_cost(mt, job);
-      const std::size_t splits = result.changes.fragment_splits.size();
-      if (a.provisional) {
-        MtChangeReport changes;
-        a.cut->process(mt, bvh, job, changes);
-        provisional_->changes.append(changes);
-        result.changes.append(changes);
-      } else {
-        a.cut->process(mt, bvh, job, result.changes);
-      }
-      pieces_stale_ = pieces_stale_ || result.changes.fragment_splits.size() > splits;
+      MtChangeReport changes;
+      a.cut->process(mt, bvh, job, changes);
+      a.tx.changes.append(changes);
+      call.append(changes);
+      pieces_stale_ = pieces_stale_ || !changes.fragment_splits.empty();
       ++jobs;
-      if (result.changes.made_vertices.size() > before && !queue_.empty()) {
-        extend_geometry(std::span<const MadeVertex>(result.changes.made_vertices).subspan(before));
-      }
+      if (!changes.made_vertices.empty() && !queue_.empty()) extend_geometry(changes.made_vertices);
     }
-    if (a.next < a.order.size()) break;
-    active_.reset();
+    if (a.next < a.order.size()) {
+      result.changes.append(call);
+      break;
+    }
     ++result.cuts_finished;
     ++totals_.cuts_finished;
+    const engine::ValidationReport guard = check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex);
+    if (!guard.ok()) {
+      result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &a.tx.bvh_mark);
+      result.refused_why = guard.problems.front();
+      result.refused_reported_vertices = a.tx.changes.made_vertices.size() - call.made_vertices.size();
+      result.changes.counts.add(call.counts);
+      pieces_stale_ = pieces_stale_ || result.refused->fragments_removed > 0;
+      ++refused_;
+      active_.reset();
+      break;  // the caller maps its frontier through the retraction before any later cut
+    }
+    result.changes.append(call);
+    if (a.provisional) held_ = std::move(a.tx);
+    active_.reset();
     if (def_.report_pieces && pieces_stale_) {
       result.pieces = find_pieces(mt);
       pieces_stale_ = false;
@@ -151,9 +171,12 @@ CutterProgress TimeCriticalCutter::progress() const {
 
 engine::ValidationReport TimeCriticalCutter::validate(const Mt& mt) const {
   engine::ValidationReport report;
-  if (provisional_)
-    for (auto& p : validate_retractable(mt, provisional_->changes, provisional_->fragments_before).problems)
+  if (held_)
+    for (auto& p : validate_retractable(mt, held_->changes, held_->fragments_before).problems)
       report.add("cutter: provisional cut: " + p);
+  if (active_)
+    for (auto& p : validate_retractable(mt, active_->tx.changes, active_->tx.fragments_before).problems)
+      report.add("cutter: cut in progress: " + p);
   if (provisional_queued_ && (queue_.empty() || !queue_.back().provisional))
     report.add("cutter: a provisional cut is counted as queued but the queue's last entry is not one");
   if (!active_) return report;

@@ -86,7 +86,7 @@ class TimeCriticalCutter {
   // Throws std::logic_error while one is held.
   void submit_provisional(const Mt& mt, const CutPolygon& polygon);
   // A provisional cut is queued, in progress or done and not retracted.
-  bool provisional_held() const { return provisional_queued_ || provisional_.has_value(); }
+  bool provisional_held() const { return provisional_queued_ || held_ || (active_ && active_->provisional); }
   // Takes the provisional cut back: a queued one is dropped, a started one
   // (its pending jobs dropped) is undone in `mt` and `bvh`. nullopt when none
   // had started. The caller maps its frontier (retract_frontier).
@@ -96,8 +96,8 @@ class TimeCriticalCutter {
   // provisionally, all in rest space. Returns the retraction.
   std::optional<CutRetraction> recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
                                      const std::optional<CutPolygon>& current);
-  // What the held provisional cut has changed so far (empty when none).
-  const MtChangeReport* provisional_changes() const { return provisional_ ? &provisional_->changes : nullptr; }
+  // What the held provisional cut has changed so far (nullptr when none).
+  const MtChangeReport* provisional_changes() const;
 
   // Processes jobs within `budget`, visible fragments of `frontier` first
   // (frontier: the World's, mapped after every call). Returns what changed;
@@ -105,14 +105,21 @@ class TimeCriticalCutter {
   // the pieces may have changed since they were last counted (a fragment
   // split, or a retraction that merged parts).
   struct RunResult {
-    MtChangeReport changes;
-    std::size_t cuts_finished = 0;
+    MtChangeReport changes;          // of the cuts kept (and of the one in progress)
+    std::size_t cuts_finished = 0;   // kept or refused
     std::optional<MtPieces> pieces;  // after the last cut this call finished
+    // A cut that check_cut (cut_guard.h) refused when it finished, taken
+    // back: the call stops there, and the caller maps its frontier through
+    // the retraction (retract_frontier) after following `changes`.
+    std::optional<CutRetraction> refused;
+    std::string refused_why;         // check_cut's first problem
+    std::size_t refused_reported_vertices = 0;  // vertices of the refused cut that earlier calls reported
   };
   RunResult run(Mt& mt, TetBvh& bvh, const Frontier& frontier, const CutBudget& budget);
 
   bool frozen() const { return active_.has_value() || !queue_.empty(); }
   CutterProgress progress() const;
+  std::size_t cuts_refused() const { return refused_; }
   // The active cut's bookkeeping (MtCut::validate) and the job order:
   // no hidden job done while a visible one is pending; a held provisional
   // cut can be retracted (validate_retractable).
@@ -124,9 +131,18 @@ class TimeCriticalCutter {
     std::vector<Vec3> geometry;  // empty = rest
     bool provisional = false;
   };
+  // What a cut changed since it started, to take it back: the MT's fragment
+  // count and the index when it started, and every change it made.
+  struct Transaction {
+    std::size_t fragments_before = 0;
+    std::size_t first_new_vertex = 0;
+    MtChangeReport changes;
+    engine::TetBvh::Mark bvh_mark;
+  };
   struct Active {
     std::unique_ptr<MtCut> cut;
     bool provisional = false;
+    Transaction tx;
     std::vector<std::size_t> order;   // jobs: visible first, then hidden, ascending within each
     std::size_t visible = 0;          // leading entries of `order` that are visible
     std::size_t next = 0;             // next entry of `order`
@@ -139,19 +155,14 @@ class TimeCriticalCutter {
   MtCutWorkspace workspace_;  // reused by each cut in turn
   std::deque<Queued> queue_;
   std::optional<Active> active_;
-  // The started provisional cut: the MT's fragment count when it started
-  // and every change it made, what retract() undoes.
-  struct Provisional {
-    std::size_t fragments_before = 0;
-    MtChangeReport changes;
-    engine::TetBvh::Mark bvh_mark;  // the index when it started: retracting rolls it back
-  };
-  std::optional<Provisional> provisional_;
+  std::optional<Transaction> held_;  // the provisional cut, finished and kept until retract()
+  std::size_t first_cut_vertex_ = SIZE_MAX;  // the MT's vertex count when the first cut started
   bool provisional_queued_ = false;  // the queue's last entry is provisional
   // A fragment split or a retraction merged parts since pieces were last
   // counted: the next finished cut counts them (else it reports none).
   bool pieces_stale_ = true;
   CutterProgress totals_;
+  std::size_t refused_ = 0;
 };
 
 // S mapped through fragment splits (in order): every part of a fragment in S is in S.

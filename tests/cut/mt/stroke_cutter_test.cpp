@@ -23,6 +23,7 @@ using Path = std::function<cut::BladePose(double s)>;
 struct StrokeOutcome {
   Mt mt;
   std::size_t pieces = 0;
+  std::size_t refused = 0;  // cuts the cutter took back (cut_guard.h)
   std::vector<CutPolygon> swept;  // the quads between consecutive poses
   bool valid = true;
 };
@@ -30,7 +31,7 @@ struct StrokeOutcome {
 // Cuts `path` in `steps` steps (a pose each, then one that disengages),
 // validating after every step.
 StrokeOutcome cut_progressively(const Mt& original, const Path& path, int steps, const std::string& where) {
-  StrokeOutcome out{original, 0, {}, true};
+  StrokeOutcome out{original, 0, 0, {}, true};
   Mt& mt = out.mt;
   engine::TetBvh bvh(mt);
   Frontier frontier = Frontier::coarsest(mt);
@@ -56,6 +57,7 @@ StrokeOutcome cut_progressively(const Mt& original, const Path& path, int steps,
   }
   EXPECT_FALSE(cutter.provisional_held()) << where;
   out.pieces = cut::find_pieces(mt).count;
+  out.refused = cutter.cuts_refused();
   return out;
 }
 
@@ -167,7 +169,9 @@ int stroke_count() {
 
 // Random strokes: 1 to 3 straight legs in random directions across the
 // object's box, a random depth (the tip inside or through), 20 to 120 steps
-// (1,000 for one stroke in 50): valid after every step. A one-leg stroke
+// (1,000 for one stroke in 50): valid after every step, a cut refused (taken
+// back where it would have pinched the MT, cut_guard.h) in at most one
+// stroke in 20. A one-leg stroke
 // through the whole depth ends as the one cut of its polygon.
 TEST(StrokeCutter, RandomStrokesKeepTheMtValid) {
   const std::vector<std::string> specs = {"builtin:ellipsoid", "builtin:box", "builtin:cylinder",
@@ -178,6 +182,7 @@ TEST(StrokeCutter, RandomStrokesKeepTheMtValid) {
   const int strokes = stroke_count();
   int one_leg_through = 0;
   std::vector<int> invalid;  // strokes that left the MT invalid at some step
+  int with_refusals = 0;     // strokes with a cut the cutter refused
   const char* first_env = std::getenv("MTCUT_STROKE_FIRST");
   const int first = first_env ? std::max(0, std::atoi(first_env)) : 0;
   for (int i = 0; i < strokes; ++i) {
@@ -214,13 +219,20 @@ TEST(StrokeCutter, RandomStrokesKeepTheMtValid) {
       invalid.push_back(i);
       continue;
     }
+    if (r.refused > 0) {
+      ++with_refusals;
+      std::printf("[ report   ] %s: %zu cuts refused\n", where.c_str(), r.refused);
+    }
     if (legs == 1 && depth > 1.0) {
       ++one_leg_through;
       EXPECT_TRUE(canonical_mt(r.mt) == canonical_mt(cut_at_once(original, path, steps))) << where;
     }
   }
-  std::printf("[ report   ] %d random strokes, %d of one leg through the whole depth, %zu invalid\n", strokes,
-              one_leg_through, invalid.size());
+  std::printf("[ report   ] %d random strokes, %d of one leg through the whole depth, %zu invalid, %d with a cut "
+              "refused\n", strokes, one_leg_through, invalid.size(), with_refusals);
+  // Refusals keep the MT valid at the price of an incision that does not
+  // show: they must stay the exception.
+  EXPECT_LE(with_refusals * 20, strokes) << with_refusals << " strokes had a cut refused";
   EXPECT_TRUE(invalid.empty()) << invalid.size() << " strokes left the MT invalid (see above), the first "
                                << (invalid.empty() ? -1 : invalid.front());
 }

@@ -1,0 +1,39 @@
+#pragma once
+// A finished cut checked where it can have broken the MT, before it is kept.
+//
+// Why. One planar cut of the MT is conforming by construction (mt_cut.h).
+// A cut that meets an earlier crack is not always: where a stroke's next
+// straight part crosses the front its last part left with the blade's tip
+// inside the tissue, the new crack can reach an edge of the old one, and
+// the tissue around that edge is then two wedges joined only along it (a
+// boundary edge of four faces). The single-resolution cutter splits such
+// vertices (cut/vertex_unpinch.h); the MT cut does not, so the cutter keeps
+// a cut only when it finds no such pinch and no flat piece, and otherwise
+// takes it back (cut_retraction.h): the incision stays as it was, which the
+// paper's relaxed correctness allows, and the MT stays valid.
+//
+// What is checked, at the finest and coarsest resolutions (those validate()
+// checks whole): every piece the cut made is positively oriented (exact),
+// and around every edge of a piece whose two ends cuts made, the faces
+// shared by no other tet are none or two: for the pieces of a tet that was
+// itself a piece of an earlier cut (where the new crack meets an old one),
+// every such edge; elsewhere, those whose two ends earlier cuts made. The
+// other edges are a single cut's, conforming by construction; the check
+// costs a box query per edge, only near old cracks.
+
+#include <cstddef>
+
+#include "cut/mt/mt_change_report.h"
+#include "engine/mt/mt.h"
+#include "engine/mt/tet_bvh.h"
+#include "engine/validation.h"
+
+namespace mtcut::cut {
+
+// `cut`: everything the finished cut changed; vertices from `first_cut_vertex`
+// on were made by cuts (earlier ones and this), the cut's own from
+// `first_new_vertex` on. Empty when the cut may be kept.
+engine::ValidationReport check_cut(const engine::Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
+                                   std::size_t first_cut_vertex, std::size_t first_new_vertex);
+
+}  // namespace mtcut::cut
