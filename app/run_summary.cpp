@@ -164,6 +164,12 @@ void print_run_paragraph(std::ostream& out, const nlohmann::ordered_json& s) {
     p << " (steps refused for a NaN or a runaway speed: the state before each was kept, so the tissue stood still"
          " in those frames; an explicit step too long for the smallest elements, which a cut can make, does this:"
          " raise [integrator] substeps or use the implicit integrator)";
+  if (s["cuts_refused"].get<std::size_t>() > 0)
+    p << "; " << s["cuts_refused"].get<std::size_t>()
+      << " cuts taken back where a stroke's new crack would have pinched the MT against an older one (that part of"
+         " the incision does not show)";
+  if (!s["first_cut_frame"].is_null())
+    p << "; the first cut showed at frame " << s["first_cut_frame"].get<std::uint64_t>();
   p << "; the MT, frontier and springs are " << (s["valid"].get<bool>() ? "valid" : "NOT valid")
     << "; state hash " << s["state_hash"].get<std::string>() << ".";
   if (s.contains("outputs")) {

@@ -22,9 +22,9 @@
 // `hull_excess`). The next part starts half a sweep back: at the pose midway
 // between the part's last two, then its last pose, then the new one. Two
 // parts sharing only a blade segment would bring the junction back; two that
-// overlap cross each other's plane along a line inside both, as any two
-// cuts may, and nothing is left uncut between them (a turning stroke
-// separates what it goes round).
+// overlap cross each other near the turn, as any two cuts may, and no sweep
+// between them is left uncut. (Each polygon's end is still a partial cut of
+// the tets around the turn, so at coarse resolutions a bridge remains there.)
 
 #include <optional>
 #include <span>
