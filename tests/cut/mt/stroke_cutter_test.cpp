@@ -168,7 +168,7 @@ int stroke_count() {
 }
 
 // Random strokes: 1 to 3 straight legs in random directions across the
-// object's box, a random depth (the tip inside or through), 20 to 120 steps
+// object's box, a random depth (the tip inside or through), 20 to 80 steps
 // (1,000 for one stroke in 100): valid after every step, a cut refused (taken
 // back where it would have pinched the MT, cut_guard.h) in at most one
 // stroke in 20. A one-leg stroke
@@ -192,7 +192,7 @@ TEST(StrokeCutter, RandomStrokesKeepTheMtValid) {
     const Vec3 size = box.hi - box.lo;
     const int legs = 1 + static_cast<int>(u(rng) * 3);
     const double depth = 0.3 + 0.9 * u(rng);
-    const int steps = i % 100 == 99 ? 1000 : 20 + static_cast<int>(u(rng) * 100);
+    const int steps = i % 100 == 99 ? 1000 : 20 + static_cast<int>(u(rng) * 60);
     // The blade's foot path: a polyline from outside the box across it.
     std::vector<Vec3> corners;
     const double a0 = 2 * M_PI * u(rng);
