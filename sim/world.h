@@ -21,7 +21,9 @@
 //                3, the state carried over, cut vertices from their parents
 //                or from the last provisional cut's vertex of the same key);
 //                a piece the cut separates has no spring left to the rest
-//                and falls;
+//                and falls; a cut the cutter refuses (it would have pinched
+//                the MT against an older crack, cut/mt/cut_guard.h) is
+//                taken back and counted;
 //   3. lod       unless the cutter froze it, take the frontier move decided
 //                def.lod.build_frames ago, with its springs (built
 //                meanwhile, sim/model_build.h), and carry the state over;

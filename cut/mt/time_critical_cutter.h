@@ -27,6 +27,10 @@
 // it (the MT as before it, up to numbering). At most one is held, and it is
 // the last cut: retract() before submitting anything else.
 //
+// Every cut is a transaction: when its last job is done, check_cut
+// (cut_guard.h) looks where it met older cracks, and a cut that would leave
+// the MT invalid is taken back and reported (RunResult::refused).
+//
 // Budgets are work units (tets split or relabelled, plus one per job: the
 // same on every machine, so runs are reproducible) and/or milliseconds;
 // every call does at least one job when any is pending.
