@@ -51,6 +51,7 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   const auto earlier = [&](VertId v) { return v.index() >= first_cut_vertex && v.index() < first_new_vertex; };
   const auto by_cuts = [&](VertId v) { return v.index() >= first_cut_vertex; };
   std::vector<std::pair<std::int32_t, std::int32_t>> edges;
+  std::vector<FragId> fragments;
   const auto add_edges = [&](const engine::Tet& v, auto&& both) {
     for (const auto& e : engine::kTetEdges)
       if (both(v[e[0]]) && both(v[e[1]]))
@@ -77,6 +78,16 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   const auto finest = [&](TetId t) { return mt.alive(t) && mt.birth(t) == mt.root(); };
   const auto coarsest = [&](TetId t) { return mt.alive(t) && mt.death(t) == mt.drain(); };
+  // Every fragment the cut processed (and the parts it made) still replaces
+  // the same region: where two cracks meet, the cut may bend differently in
+  // a fragment's two tessellations.
+  fragments.assign(cut.processed.begin(), cut.processed.end());
+  for (const FragmentSplit& split : cut.fragment_splits)
+    fragments.insert(fragments.end(), split.parts.begin(), split.parts.end());
+  std::sort(fragments.begin(), fragments.end());
+  fragments.erase(std::unique(fragments.begin(), fragments.end()), fragments.end());
+  for (FragId f : fragments)
+    for (auto& problem : engine::validate_fragment(mt, f).problems) report.add("cut: " + problem);
   std::vector<std::int32_t> thirds;
   for (const auto& [a, b] : edges) {
     for (const auto& [name, boundary] :

@@ -15,6 +15,16 @@ StrokeStep cut_stroke_step(StrokeSweep& stroke, TimeCriticalCutter& cutter, Mt& 
     out.run = cutter.run(mt, bvh, frontier, budget);
     follow_cut(mt, frontier, out.run.changes);
     if (out.run.refused) frontier = retract_frontier(mt, frontier, *out.run.refused);
+    // A refusal ends the cutter's call: the cuts queued behind it run now.
+    while (out.run.refused && cutter.frozen()) {
+      TimeCriticalCutter::RunResult more = cutter.run(mt, bvh, frontier, budget);
+      follow_cut(mt, frontier, more.changes);
+      if (more.refused) frontier = retract_frontier(mt, frontier, *more.refused);
+      out.run.changes.append(more.changes);
+      out.run.cuts_finished += more.cuts_finished;
+      if (more.pieces) out.run.pieces = std::move(more.pieces);
+      out.run.refused = std::move(more.refused);
+    }
   }
   return out;
 }

@@ -200,6 +200,12 @@ class Mt {
   InstanceId instance_;
 };
 
+// One fragment's part of Mt::validate(): it replaces a region by a
+// tessellation of the same region (the faces of the region's outer surface
+// inside the object the same, with the same orientation; with a preserved
+// boundary the volume too). Nothing for the root and the drain.
+ValidationReport validate_fragment(const Mt& mt, FragId f);
+
 // The faces of a set of tets that no other tet of the set shares, each as
 // (sorted vertex ids) with the orientation seen from its tet: the outer
 // surface of a region. Used by validation (a fragment's outer surface must

@@ -92,10 +92,16 @@ void check_dag(const Mt& mt, ValidationReport& report) {
                " fragments are on a cycle or not reachable from the root");
 }
 
-// Each fragment replaces a region by a tessellation of the same region: the
-// faces of the region's outer surface that are inside the object are the same,
-// with the same orientation; with a preserved boundary the volume too.
 void check_fragments(const Mt& mt, ValidationReport& report) {
+  for (std::size_t i = 0; i < mt.num_fragments(); ++i)
+    for (auto& problem : validate_fragment(mt, FragId(i)).problems) report.add(std::move(problem));
+}
+
+}  // namespace
+
+ValidationReport validate_fragment(const Mt& mt, FragId f) {
+  ValidationReport report;
+  if (f == mt.root() || f == mt.drain()) return report;
   const auto inner = [&](std::span<const TetId> tets) {
     std::vector<std::array<VertId, 3>> faces;
     for (const OrientedFace& face : outer_faces(mt, tets))
@@ -108,23 +114,18 @@ void check_fragments(const Mt& mt, ValidationReport& report) {
     std::sort(faces.begin(), faces.end());
     return faces;
   };
-  for (std::size_t i = 0; i < mt.num_fragments(); ++i) {
-    const FragId f(i);
-    if (f == mt.root() || f == mt.drain()) continue;
-    if (inner(mt.created(f)) != inner(mt.replaced(f)))
-      report.add("fragment " + str(f.value) + ": its tets do not fill the region of the tets it replaces");
-    if (mt.boundary_preserved()) {
-      double before = 0, after = 0;
-      for (TetId t : mt.replaced(f)) before += mt.volume(t);
-      for (TetId t : mt.created(f)) after += mt.volume(t);
-      if (!(std::abs(after - before) <= 1e-9 * before))
-        report.add("fragment " + str(f.value) + " changes the volume from " + std::to_string(before) + " to " +
-                   std::to_string(after));
-    }
+  if (inner(mt.created(f)) != inner(mt.replaced(f)))
+    report.add("fragment " + str(f.value) + ": its tets do not fill the region of the tets it replaces");
+  if (mt.boundary_preserved()) {
+    double before = 0, after = 0;
+    for (TetId t : mt.replaced(f)) before += mt.volume(t);
+    for (TetId t : mt.created(f)) after += mt.volume(t);
+    if (!(std::abs(after - before) <= 1e-9 * before))
+      report.add("fragment " + str(f.value) + " changes the volume from " + std::to_string(before) + " to " +
+                 std::to_string(after));
   }
+  return report;
 }
-
-}  // namespace
 
 ValidationReport Mt::validate() const {
   ValidationReport report;
