@@ -64,13 +64,6 @@ BenchMesh load_bench_mesh(const std::string& name, const std::string& spec, cons
   return out;
 }
 
-std::string default_liver() {
-  const std::string path =
-      (std::filesystem::path(MTCUT_SHARED_MESHES) / "liver2.obj").lexically_normal().string();
-  if (!std::filesystem::exists(path))
-    throw engine::InputError(path + ": the real liver mesh is not there (give --mesh PATH)");
-  return path;
-}
 
 // Counts of one scheme over every cut (taken in the warm-up run) and its
 // timings per run.
@@ -81,11 +74,19 @@ struct SchemeTally {
 
 }  // namespace
 
+std::string default_liver_mesh() {
+  const std::string path =
+      (std::filesystem::path(MTCUT_SHARED_MESHES) / "liver2.obj").lexically_normal().string();
+  if (!std::filesystem::exists(path))
+    throw engine::InputError(path + ": the real liver mesh is not there (give --mesh PATH)");
+  return path;
+}
+
 nlohmann::ordered_json run_cut_bench(const CutBenchDef& def) {
   engine::MeshLoadDef organ_load;
   organ_load.builtin_tets = def.organ_tets;
   std::vector<BenchMesh> meshes;
-  meshes.push_back(load_bench_mesh("liver", def.liver.empty() ? default_liver() : def.liver, {}));
+  meshes.push_back(load_bench_mesh("liver", def.liver.empty() ? default_liver_mesh() : def.liver, {}));
   meshes.push_back(load_bench_mesh("organ", def.organ, organ_load));
 
   std::array<cut::SplitTable, 2> tables = {cut::SplitTable(kSchemes[0]), cut::SplitTable(kSchemes[1])};

@@ -25,4 +25,8 @@ struct CutBenchDef {
 // ratio_new_tets_bielser17_over_lut. Throws InputError for a bad mesh.
 nlohmann::ordered_json run_cut_bench(const CutBenchDef& def);
 
+// ../shared/meshes/liver2.obj, the real mesh the benches cut; throws
+// InputError when it is not there.
+std::string default_liver_mesh();
+
 }  // namespace mtcut::app

@@ -1,8 +1,9 @@
 #include "app/bench_stroke.h"
 
+#include "app/bench_cut.h"
+
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <functional>
 
 #include "cut/mt/mt_pieces.h"
@@ -105,13 +106,6 @@ double percentile(std::vector<double> v, double q) {
   return engine::nearest_rank<double>(v, q);
 }
 
-std::string default_liver() {
-  const std::string path = (std::filesystem::path(MTCUT_SHARED_MESHES) / "liver2.obj").lexically_normal().string();
-  if (!std::filesystem::exists(path))
-    throw engine::InputError(path + ": the real liver mesh is not there (give --mesh PATH)");
-  return path;
-}
-
 nlohmann::ordered_json bench_organ(const std::string& name, const engine::Mt& mt, const StrokeBenchDef& def) {
   nlohmann::ordered_json organ;
   organ["mesh"] = name;
@@ -154,22 +148,19 @@ nlohmann::ordered_json bench_organ(const std::string& name, const engine::Mt& mt
 }  // namespace
 
 nlohmann::ordered_json run_stroke_bench(const StrokeBenchDef& def) {
+  const std::string liver = def.liver.empty() ? default_liver_mesh() : def.liver;
+  engine::MeshLoadDef load;
+  load.builtin_tets = def.organ_tets;
+  load.builtin_size = Vec3(0.16, 0.10, 0.07);  // the default scenario's organ
   nlohmann::ordered_json out;
   out["bench"] = "stroke";
   out["runs"] = def.runs;
   nlohmann::ordered_json organs = nlohmann::ordered_json::array();
-  {
-    engine::MeshLoadDef load;
-    load.builtin_tets = def.organ_tets;
-    load.builtin_size = Vec3(0.16, 0.10, 0.07);  // the default scenario's organ
-    const engine::Mt mt = engine::build_mt(engine::load_mesh("builtin:ellipsoid", load).mesh, {});
-    organs.push_back(bench_organ("builtin:ellipsoid", mt, def));
-  }
-  {
-    const std::string liver = def.liver.empty() ? default_liver() : def.liver;
-    const engine::Mt mt = engine::build_mt(engine::load_mesh(liver, {}).mesh, {});
-    organs.push_back(bench_organ(liver, mt, def));
-  }
+  // Both MTs first: a bad mesh fails before any stroke is cut.
+  const std::vector<std::string> specs = {"builtin:ellipsoid", liver};
+  std::vector<engine::Mt> mts;
+  for (const std::string& spec : specs) mts.push_back(engine::build_mt(engine::load_mesh(spec, load).mesh, {}));
+  for (std::size_t i = 0; i < specs.size(); ++i) organs.push_back(bench_organ(specs[i], mts[i], def));
   out["organs"] = organs;
   return out;
 }

@@ -19,7 +19,7 @@ namespace mtcut::app {
 
 struct StrokeBenchDef {
   std::string liver;  // the real mesh (empty: liver2.obj among the shared meshes)
-  int organ_tets = 8000;
+  int organ_tets = 8000;  // target tets of the builtin organ (and of a builtin given as the real mesh)
   std::vector<int> steps{60, 240, 1000};
   int runs = 3;  // timed runs per stroke and step count (median of each figure)
 };

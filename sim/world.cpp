@@ -139,10 +139,13 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     strokes_.push_back({frame_, frame_, mt_.num_live_tets(), mt_.num_live_tets(), false});
   // A blade moving outside the tissue (its sweep's box clear of the
   // particles') leaves the part's cut as it is.
-  engine::Aabb tissue;
-  for (const Vec3& x : state_.x) tissue.extend(x);
-  const bool recut = !advance.ended.empty() || (advance.moved && advance.swept.overlaps(tissue)) ||
-                     (cutter_.provisional_held() && !stroke_.active());
+  const auto sweeps_tissue = [&] {
+    engine::Aabb tissue;
+    for (const Vec3& x : state_.x) tissue.extend(x);
+    return advance.swept.overlaps(tissue);
+  };
+  const bool recut = !advance.ended.empty() || (cutter_.provisional_held() && !stroke_.active()) ||
+                     (advance.moved && sweeps_tissue());
   if (!recut && !cutter_.frozen()) return;
   take_lod_move(m);  // the MT is about to change
   DeformationSnapshot snapshot = take_snapshot(mt_, frontier_, model_, state_);
@@ -163,7 +166,6 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     m.cuts_started = advance.ended.size() + (current ? 1 : 0);
     if (const auto retraction = cutter_.recut(mt_, bvh_, advance.ended, current)) {
       frontier_ = cut::retract_frontier(mt_, frontier_, *retraction);
-      m.retracted_tets = retraction->killed.size();
       if (m.cuts_started == 0 && retraction->fragments_removed > 0)
         pieces_ = cut::find_pieces(mt_).count;  // the stroke left nothing to cut
     }

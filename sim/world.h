@@ -78,7 +78,6 @@ struct FrameMetrics {
   std::size_t lod_changes = 0;     // fragments added or removed this frame
   std::size_t cuts_started = 0;    // cut polygons the blade's stroke gave this frame
   std::size_t cut_tets = 0;        // MT tets the cutter replaced this frame
-  std::size_t retracted_tets = 0;  // pieces of the last provisional cut taken back this frame
   std::size_t cuts_refused = 0;    // cuts taken back this frame because they would have broken the MT
   std::size_t cut_vertices = 0;    // MT vertices the cuts so far have made and use (a retracted cut's are not)
   std::size_t provisional_tets = 0;  // live pieces of the provisional cut of the stroke's part in progress

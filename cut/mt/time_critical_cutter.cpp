@@ -137,7 +137,6 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     const engine::ValidationReport guard = check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex);
     if (!guard.ok()) {
       result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &a.tx.bvh_mark);
-      result.refused_why = guard.problems.front();
       result.refused_reported_vertices = a.tx.changes.made_vertices.size() - call.made_vertices.size();
       result.changes.counts.add(call.counts);
       pieces_stale_ = pieces_stale_ || result.refused->fragments_removed > 0;

@@ -116,7 +116,6 @@ class TimeCriticalCutter {
     // back: the call stops there, and the caller maps its frontier through
     // the retraction (retract_frontier) after following `changes`.
     std::optional<CutRetraction> refused;
-    std::string refused_why;         // check_cut's first problem
     std::size_t refused_reported_vertices = 0;  // vertices of the refused cut that earlier calls reported
   };
   RunResult run(Mt& mt, TetBvh& bvh, const Frontier& frontier, const CutBudget& budget);
