@@ -60,6 +60,10 @@ const std::vector<StrokeShape>& shapes() {
 
 struct StrokeRun {
   std::size_t new_tets = 0, pieces = 0, steps_cut = 0;
+  // The MT's storage after the stroke: tet slots (live and dead) and vertices
+  // (used or not), against the live tets; every retracted provisional cut
+  // leaves its pieces' slots and its vertices behind.
+  std::size_t tet_slots = 0, vertices = 0;
   std::vector<double> step_ms;  // (steps that changed the MT)
 };
 
@@ -95,6 +99,8 @@ StrokeRun cut_stroke(const engine::Mt& original, const StrokeShape& shape, int s
     if (step.recut) out.step_ms.push_back(ms);
   }
   out.new_tets = mt.num_live_tets() - before;
+  out.tet_slots = mt.num_tets();
+  out.vertices = mt.num_vertices();
   out.pieces = cut::find_pieces(mt).count;
   out.steps_cut = out.step_ms.size();
   return out;
@@ -116,7 +122,10 @@ nlohmann::ordered_json bench_organ(const std::string& name, const engine::Mt& mt
     const StrokeRun one = cut_stroke(mt, shape, 1, kOnePolygonSamples);
     nlohmann::ordered_json row;
     row["stroke"] = shape.name;
-    row["one_polygon"] = {{"new_tets", one.new_tets}, {"pieces", one.pieces}};
+    row["one_polygon"] = {{"new_tets", one.new_tets},
+                          {"pieces", one.pieces},
+                          {"mt_tet_slots", one.tet_slots},
+                          {"mt_vertices", one.vertices}};
     nlohmann::ordered_json progressive = nlohmann::ordered_json::array();
     for (int steps : def.steps) {
       std::vector<double> p50, p99, max;
@@ -135,7 +144,9 @@ nlohmann::ordered_json bench_organ(const std::string& name, const engine::Mt& mt
            {"step_ms_p50", engine::median(p50)},
            {"step_ms_p99", engine::median(p99)},
            {"step_ms_max", engine::median(max)},
-           {"pieces", run.pieces}});
+           {"pieces", run.pieces},
+           {"mt_tet_slots", run.tet_slots},
+           {"mt_vertices", run.vertices}});
       std::fprintf(stderr, "bench stroke: %s, %s, %d steps done\n", name.c_str(), shape.name, steps);
     }
     row["progressive"] = progressive;

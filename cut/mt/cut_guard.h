@@ -12,20 +12,21 @@
 // takes it back (cut_retraction.h): the incision stays as it was, which the
 // paper's relaxed correctness allows, and the MT stays valid.
 //
-// What is checked: every fragment the cut processed still replaces a region
-// by the same region (engine validate_fragment: where two cracks meet, the
-// cut may bend differently in a fragment's two tessellations; a random
-// stroke of two legs through a cylinder did so);
+// What is checked: every fragment where the new crack meets an old one (it
+// holds a piece of an earlier cut that this one split or relabelled), and
+// its parts, still replaces a region by the same region (engine
+// validate_fragment: there the cut may bend differently in a fragment's two
+// tessellations; a random stroke of two legs through a cylinder did so);
 // and at the finest and coarsest resolutions (those validate() checks
 // whole): every piece the cut made is positively oriented (exact),
 // and around every edge of a piece whose two ends cuts made, the faces
 // shared by no other tet are none or two: for the pieces of a tet that was
 // itself a piece of an earlier cut (where the new crack meets an old one),
 // every such edge; elsewhere, those whose two ends earlier cuts made. The
-// other edges are a single cut's, conforming by construction. The edge check
-// costs a box query per edge, only near old cracks; the fragment check a
-// pass over the processed fragments' tets (about a tenth of a default
-// scenario frame's cut).
+// other edges and fragments are a single planar cut's through tets no cut
+// had touched, conforming by construction. The edge check costs a point
+// query per edge end, the fragment check a pass over those fragments'
+// tets: both only near old cracks.
 
 #include <cstddef>
 

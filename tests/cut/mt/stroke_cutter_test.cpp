@@ -171,28 +171,42 @@ int stroke_count() {
 // object's box, a random depth (the tip inside or through), 20 to 80 steps
 // (1,000 for one stroke in 100): valid after every step, a cut refused (taken
 // back where it would have pinched the MT, cut_guard.h) in at most one
-// stroke in 20. A one-leg stroke
-// through the whole depth ends as the one cut of its polygon.
-TEST(StrokeCutter, RandomStrokesKeepTheMtValid) {
+// stroke in 20. A one-leg stroke through the whole depth ends as the one cut
+// of its polygon.
+//
+// The strokes are dealt to kShards tests (stroke i to shard i % kShards),
+// each stroke drawn from its own seed, so that the shards run side by side
+// and MTCUT_STROKE_FIRST replays any stroke alone. MTCUT_STROKES is the
+// total over the shards.
+constexpr int kShards = 4;
+
+class StrokeCutterRandom : public ::testing::TestWithParam<int> {};
+
+TEST_P(StrokeCutterRandom, StrokesKeepTheMtValid) {
+  const int shard = GetParam();
   const std::vector<std::string> specs = {"builtin:ellipsoid", "builtin:box", "builtin:cylinder",
                                           shared_mesh("liver.msh"), shared_mesh("torus.obj"),
                                           shared_mesh("Armadillo_Tetra_4406.vtu")};
-  std::mt19937_64 rng(2026);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const int strokes = stroke_count();
-  int one_leg_through = 0;
+  int tried = 0, one_leg_through = 0;
   std::vector<int> invalid;  // strokes that left the MT invalid at some step
   int with_refusals = 0;     // strokes with a cut the cutter refused
   const char* first_env = std::getenv("MTCUT_STROKE_FIRST");
   const int first = first_env ? std::max(0, std::atoi(first_env)) : 0;
-  for (int i = 0; i < strokes; ++i) {
-    const std::string spec = specs[static_cast<std::size_t>(i) % specs.size()];
+  for (int i = shard; i < strokes; i += kShards) {
+    if (i < first) continue;  // MTCUT_STROKE_FIRST: start at a given stroke (the same strokes)
+    ++tried;
+    std::seed_seq seed{2026u, static_cast<unsigned>(i)};
+    std::mt19937_64 rng(seed);
+    const std::string spec = specs[static_cast<std::size_t>(i / kShards) % specs.size()];
     const Mt& original = property_mt(spec);
     const engine::Aabb box = mt_box(original);
     const Vec3 size = box.hi - box.lo;
     const int legs = 1 + static_cast<int>(u(rng) * 3);
     const double depth = 0.3 + 0.9 * u(rng);
-    const int steps = i % 100 == 99 ? 1000 : 20 + static_cast<int>(u(rng) * 60);
+    // One stroke in 100 has 1,000 steps, in every shard in turn.
+    const int steps = i % 100 == 100 - kShards + (i / 100) % kShards ? 1000 : 20 + static_cast<int>(u(rng) * 60);
     // The blade's foot path: a polyline from outside the box across it.
     std::vector<Vec3> corners;
     const double a0 = 2 * M_PI * u(rng);
@@ -213,7 +227,6 @@ TEST(StrokeCutter, RandomStrokesKeepTheMtValid) {
     };
     const std::string where = "stroke " + std::to_string(i) + " on " + spec + ": " + std::to_string(legs) +
                               " legs, depth " + std::to_string(depth) + ", " + std::to_string(steps) + " steps";
-    if (i < first) continue;  // MTCUT_STROKE_FIRST: start at a given stroke (the same strokes)
     const StrokeOutcome r = cut_progressively(original, path, steps, where);
     if (!r.valid) {
       invalid.push_back(i);
@@ -228,14 +241,16 @@ TEST(StrokeCutter, RandomStrokesKeepTheMtValid) {
       EXPECT_TRUE(canonical_mt(r.mt) == canonical_mt(cut_at_once(original, path, steps))) << where;
     }
   }
-  std::printf("[ report   ] %d random strokes, %d of one leg through the whole depth, %zu invalid, %d with a cut "
-              "refused\n", strokes, one_leg_through, invalid.size(), with_refusals);
+  std::printf("[ report   ] shard %d: %d random strokes, %d of one leg through the whole depth, %zu invalid, %d "
+              "with a cut refused\n", shard, tried, one_leg_through, invalid.size(), with_refusals);
   // Refusals keep the MT valid at the price of an incision that does not
   // show: they must stay the exception.
-  EXPECT_LE(with_refusals * 20, strokes) << with_refusals << " strokes had a cut refused";
+  EXPECT_LE(with_refusals * 20, std::max(tried, 20)) << with_refusals << " strokes had a cut refused";
   EXPECT_TRUE(invalid.empty()) << invalid.size() << " strokes left the MT invalid (see above), the first "
                                << (invalid.empty() ? -1 : invalid.front());
 }
+
+INSTANTIATE_TEST_SUITE_P(Shards, StrokeCutterRandom, ::testing::Range(0, kShards));
 
 }  // namespace
 }  // namespace mtcut::test
