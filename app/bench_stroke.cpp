@@ -60,10 +60,11 @@ const std::vector<StrokeShape>& shapes() {
 
 struct StrokeRun {
   std::size_t new_tets = 0, pieces = 0, steps_cut = 0;
-  // The MT's storage after the stroke: tet slots (live and dead) and vertices
-  // (used or not), against the live tets; every retracted provisional cut
-  // leaves its pieces' slots and its vertices behind.
-  std::size_t tet_slots = 0, vertices = 0;
+  // The MT's storage: tet slots (live and dead) and vertices (used or not),
+  // most during the stroke and after it. Every retracted provisional cut
+  // leaves its pieces' slots and its vertices behind until the stroke ends
+  // and the cutter reclaims them (TimeCriticalCutter::reclaim).
+  std::size_t tet_slots = 0, vertices = 0, tet_slots_peak = 0, vertices_peak = 0;
   std::vector<double> step_ms;  // (steps that changed the MT)
 };
 
@@ -97,6 +98,10 @@ StrokeRun cut_stroke(const engine::Mt& original, const StrokeShape& shape, int s
     const cut::StrokeStep step = cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, poses);
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     if (step.recut) out.step_ms.push_back(ms);
+    const std::size_t slots = step.reclaimed ? step.reclaimed->tet_map.size() : mt.num_tets();
+    const std::size_t vertices = step.reclaimed ? step.reclaimed->vertex_map.size() : mt.num_vertices();
+    out.tet_slots_peak = std::max(out.tet_slots_peak, slots);
+    out.vertices_peak = std::max(out.vertices_peak, vertices);
   }
   out.new_tets = mt.num_live_tets() - before;
   out.tet_slots = mt.num_tets();
@@ -125,7 +130,9 @@ nlohmann::ordered_json bench_organ(const std::string& name, const engine::Mt& mt
     row["one_polygon"] = {{"new_tets", one.new_tets},
                           {"pieces", one.pieces},
                           {"mt_tet_slots", one.tet_slots},
-                          {"mt_vertices", one.vertices}};
+                          {"mt_vertices", one.vertices},
+                          {"mt_tet_slots_peak", one.tet_slots_peak},
+                          {"mt_vertices_peak", one.vertices_peak}};
     nlohmann::ordered_json progressive = nlohmann::ordered_json::array();
     for (int steps : def.steps) {
       std::vector<double> p50, p99, max;
@@ -146,7 +153,9 @@ nlohmann::ordered_json bench_organ(const std::string& name, const engine::Mt& mt
            {"step_ms_max", engine::median(max)},
            {"pieces", run.pieces},
            {"mt_tet_slots", run.tet_slots},
-           {"mt_vertices", run.vertices}});
+           {"mt_vertices", run.vertices},
+           {"mt_tet_slots_peak", run.tet_slots_peak},
+           {"mt_vertices_peak", run.vertices_peak}});
       std::fprintf(stderr, "bench stroke: %s, %s, %d steps done\n", name.c_str(), shape.name, steps);
     }
     row["progressive"] = progressive;

@@ -125,11 +125,27 @@ void World::take_cut_springs(FrameMetrics& m) {
   adopt_model(std::move(model), std::move(cut->snapshot), &cut->origins, m);
 }
 
+void World::reclaim_cut_storage(FrameMetrics& m) {
+  // At the start of the cut stage: a cut's springs were taken in the frame
+  // of the cut; a pending LOD move holds a frontier and a build over the
+  // MT's ids, so it is taken first, as before a cut.
+  if (cut_springs_ || !cutter_.reclaimable(mt_)) return;
+  take_lod_move(m);
+  const std::optional<engine::Mt::Compaction> compaction = cutter_.reclaim(mt_, bvh_);
+  if (!compaction) return;
+  // Ids keep their order (Mt::compact), so the particles keep theirs (it
+  // breaks ties by vertex id): the model and state stay as they are.
+  for (VertId& v : model_.particle_vertex) v = compaction->vertex(v);
+  frontier_ = engine::Frontier::from_fragments(mt_, frontier_.fragments());
+  lod_target_ = frontier_;
+}
+
 void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   // The stroke's polygons: every pose of the frame goes through the sweep in
   // order, so a turn within the frame ends a part there. A part that ended
   // is cut for good; the part in progress is cut provisionally, every frame
   // its blade moves (cut_retraction.h says how and why).
+  reclaim_cut_storage(m);
   std::vector<cut::BladePose> blades;
   blades.reserve(poses.size());
   for (const ScalpelPose& pose : poses) blades.push_back({pose.base, pose.tip, pose.engaged});

@@ -149,6 +149,10 @@ class World {
   void take_lod_move(FrameMetrics& m);
   // Takes the springs of this frame's cut, if building: model and state.
   void take_cut_springs(FrameMetrics& m);
+  // The MT compacted when retracted cuts left more dead tets than live ones
+  // and no cut is pending (TimeCriticalCutter::reclaim), and what the World
+  // holds by MT id follows (the particles' vertices, the frontier).
+  void reclaim_cut_storage(FrameMetrics& m);
   // Stage 2: queue the blade's sweep over the poses, run the cutter, follow its changes.
   void run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m);
   Environment environment_for(const ScalpelPose& pose) const;

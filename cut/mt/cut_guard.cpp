@@ -15,8 +15,8 @@ using engine::Mt;
 using engine::VertId;
 
 // The live tets of the finest and coarsest resolutions around each vertex
-// of the checked edges: one point query per vertex, where a box query per
-// edge and resolution cost nine in ten of a turning stroke's steps.
+// of the checked edges: one query per vertex, where a box query per edge and
+// resolution cost nine in ten of a turning stroke's steps.
 struct Stars {
   std::vector<std::int32_t> vertices;  // sorted
   std::vector<std::uint32_t> first;    // (vertices + 1) offsets into tets
@@ -37,7 +37,12 @@ Stars stars_of(const Mt& mt, const engine::TetBvh& bvh, std::vector<std::int32_t
   for (const std::int32_t value : out.vertices) {
     out.first.push_back(static_cast<std::uint32_t>(out.tets.size()));
     const VertId v(value);
-    bvh.for_each_containing(mt, mt.position(v), [&](TetId t) {
+    // A box query at the point, not for_each_containing: a tet's own corner
+    // is a degenerate case for its exact inside test, and every tet here has v
+    // as a corner.
+    engine::Aabb at;
+    at.extend(mt.position(v));
+    bvh.for_each_overlapping(mt, at, [&](TetId t) {
       if (!mt.alive(t)) return true;
       const engine::Tet& corners = mt.tet(t);
       if (std::find(corners.begin(), corners.end(), v) == corners.end()) return true;

@@ -9,10 +9,12 @@
 // provisionally, and the next frame retracts that cut and cuts the grown
 // polygon afresh, so no piece of a provisional split is ever cut again.
 //
-// Why vertices stay. The vertices the cut made are left in the MT, unused:
-// ids are never reused, so whatever a caller keyed by vertex or tet id (the
-// spring model, a snapshot of the simulated state) stays unambiguous. Tets
-// keep their slots too (a tet is never erased, only killed).
+// Why vertices stay. The vertices the cut made are left in the MT, unused,
+// and its pieces keep their slots, dead (a tet is never erased, only
+// killed): ids are not reused while a stroke goes on, so whatever a caller
+// keyed by vertex or tet id (the spring model, a snapshot of the simulated
+// state) stays unambiguous. Between strokes the cutter reclaims them
+// (TimeCriticalCutter::reclaim, Mt::compact), and the callers renumber.
 
 #include <span>
 #include <vector>

@@ -29,4 +29,17 @@ void MtChangeReport::append(const MtChangeReport& later) {
   counts.add(later.counts);
 }
 
+void MtChangeReport::renumber(const engine::Mt::Compaction& compaction) {
+  for (TetReplacement& r : replaced) r.old = compaction.tet(r.old);
+  for (TetId& t : made_tets) t = compaction.tet(t);
+  for (MadeVertex& m : made_vertices) {
+    m.id = compaction.vertex(m.id);
+    for (VertId& parent : m.source.parents)
+      if (parent.valid()) parent = compaction.vertex(parent);
+    // Keys name vertices by id (sorted; the renumbering keeps their order).
+    for (std::int32_t& id : m.key.ids)
+      if (id >= 0) id = compaction.vertex_map[static_cast<std::size_t>(id)];
+  }
+}
+
 }  // namespace mtcut::cut

@@ -16,6 +16,7 @@
 
 #include "cut/vertex_factory.h"
 #include "engine/ids.h"
+#include "engine/mt/mt.h"
 #include "engine/tet_mesh.h"
 
 namespace mtcut::cut {
@@ -76,6 +77,10 @@ struct MtChangeReport {
 
   // Appends another report (a later call of the same or the next cut).
   void append(const MtChangeReport& later);
+  // Its tet and vertex ids (the made vertices' keys and parents among them)
+  // through a compaction of the MT that kept every tet it names
+  // (Mt::compact); fragments keep their ids.
+  void renumber(const engine::Mt::Compaction& compaction);
   bool empty() const { return replaced.empty() && fragment_splits.empty(); }
 };
 

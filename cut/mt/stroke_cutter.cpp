@@ -26,6 +26,7 @@ StrokeStep cut_stroke_step(StrokeSweep& stroke, TimeCriticalCutter& cutter, Mt& 
       out.run.refused = std::move(more.refused);
     }
   }
+  if ((out.reclaimed = cutter.reclaim(mt, bvh))) frontier = Frontier::from_fragments(mt, frontier.fragments());
   return out;
 }
 

@@ -45,7 +45,7 @@ std::optional<CutRetraction> TimeCriticalCutter::retract(Mt& mt, TetBvh& bvh) {
     held_.reset();
   }
   if (!tx) return std::nullopt;
-  CutRetraction out = retract_cut(mt, bvh, tx->changes, tx->fragments_before, &tx->bvh_mark);
+  CutRetraction out = retract_cut(mt, bvh, tx->changes, tx->fragments_before, tx->bvh_mark ? &*tx->bvh_mark : nullptr);
   pieces_stale_ = pieces_stale_ || out.fragments_removed > 0;
   return out;
 }
@@ -136,7 +136,7 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     ++totals_.cuts_finished;
     const engine::ValidationReport guard = check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex);
     if (!guard.ok()) {
-      result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &a.tx.bvh_mark);
+      result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &*a.tx.bvh_mark);
       result.refused_reported_vertices = a.tx.changes.made_vertices.size() - call.made_vertices.size();
       result.changes.counts.add(call.counts);
       pieces_stale_ = pieces_stale_ || result.refused->fragments_removed > 0;
@@ -155,6 +155,29 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
   totals_.total_jobs_done += jobs;
   totals_.seconds += std::chrono::duration<double>(Clock::now() - start).count();
   return result;
+}
+
+bool TimeCriticalCutter::reclaimable(const Mt& mt) const {
+  const std::size_t held = held_ ? held_->changes.replaced.size() : 0;  // dead, kept to revive
+  const std::size_t droppable = mt.num_dead_tets() - std::min(held, mt.num_dead_tets());
+  return !frozen() && droppable >= kReclaimMin && droppable > mt.num_live_tets();
+}
+
+std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh& bvh) {
+  if (!reclaimable(mt)) return std::nullopt;
+  std::vector<TetId> keep;
+  if (held_)
+    for (const TetReplacement& r : held_->changes.replaced) keep.push_back(r.old);
+  engine::Mt::Compaction out = mt.compact(std::min(first_cut_vertex_, mt.num_vertices()), keep);
+  bvh.renumber(out);
+  if (held_) {
+    held_->changes.renumber(out);
+    std::size_t kept_before = 0;  // vertices kept below the held cut's first
+    for (std::size_t v = 0; v < held_->first_new_vertex; ++v) kept_before += out.vertex_map[v] >= 0;
+    held_->first_new_vertex = kept_before;
+    held_->bvh_mark.reset();
+  }
+  return out;
 }
 
 CutterProgress TimeCriticalCutter::progress() const {

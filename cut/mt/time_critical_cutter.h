@@ -121,6 +121,21 @@ class TimeCriticalCutter {
   RunResult run(Mt& mt, TetBvh& bvh, const Frontier& frontier, const CutBudget& budget);
 
   bool frozen() const { return active_.has_value() || !queue_.empty(); }
+  // Reclaiming the slots of retracted cuts. A retracted cut leaves its
+  // pieces as dead tets and its vertices unused (cut_retraction.h), so a
+  // stroke cut progressively leaves about its part's cut every frame: a
+  // thousand steps through the builtin organ left four million tet slots
+  // for 23,000 live tets. When no cut is queued or in progress and the dead
+  // tets that no held provisional cut needs back outnumber the live ones (at
+  // least kReclaimMin of them), this compacts the MT (Mt::compact: the
+  // vertices made before the first cut keep their ids), renumbers the held
+  // cut and `bvh` (TetBvh::renumber); the caller maps what else it holds through the
+  // result (a frontier: Frontier::from_fragments over the same fragments).
+  // nullopt when it did nothing. Amortised, a pass over the MT per as many
+  // dead tets as there are live ones.
+  static constexpr std::size_t kReclaimMin = 4096;
+  bool reclaimable(const Mt& mt) const;  // reclaim() would compact now
+  std::optional<engine::Mt::Compaction> reclaim(Mt& mt, TetBvh& bvh);
   CutterProgress progress() const;
   std::size_t cuts_refused() const { return refused_; }
   // The active cut's bookkeeping (MtCut::validate) and the job order:
@@ -136,11 +151,13 @@ class TimeCriticalCutter {
   };
   // What a cut changed since it started, to take it back: the MT's fragment
   // count and the index when it started, and every change it made.
+  // A reclaim() while it is held renumbers its changes, and the index,
+  // rebuilt, has no mark any more: it is then retracted tet by tet.
   struct Transaction {
     std::size_t fragments_before = 0;
     std::size_t first_new_vertex = 0;
     MtChangeReport changes;
-    engine::TetBvh::Mark bvh_mark;
+    std::optional<engine::TetBvh::Mark> bvh_mark;
   };
   struct Active {
     std::unique_ptr<MtCut> cut;

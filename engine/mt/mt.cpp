@@ -251,6 +251,76 @@ void Mt::remove_last_fragment() {
   ++revision_;
 }
 
+std::size_t Mt::num_unused_vertices() const {
+  std::vector<std::uint8_t> used(num_vertices(), 0);
+  for (std::size_t t = 0; t < num_tets(); ++t)
+    if (alive(TetId(t)))
+      for (VertId v : tet_verts_[t]) used[v.index()] = 1;
+  return static_cast<std::size_t>(std::count(used.begin(), used.end(), std::uint8_t{0}));
+}
+
+Mt::Compaction Mt::compact(std::size_t first_droppable_vertex, std::span<const TetId> keep_dead) {
+  Compaction out;
+  // tet_map: 0 kept, -1 dropped, until numbered below.
+  out.tet_map.assign(num_tets(), -1);
+  for (std::size_t t = 0; t < num_tets(); ++t)
+    if (alive(TetId(t))) out.tet_map[t] = 0;
+  for (TetId t : keep_dead) out.tet_map[t.index()] = 0;
+  out.vertex_map.assign(num_vertices(), -1);
+  for (std::size_t v = 0; v < std::min(first_droppable_vertex, num_vertices()); ++v) out.vertex_map[v] = 0;
+  for (std::size_t t = 0; t < num_tets(); ++t)
+    if (out.tet_map[t] == 0)
+      for (VertId v : tet_verts_[t]) out.vertex_map[v.index()] = 0;
+  std::int32_t next = 0;
+  for (std::size_t v = 0; v < num_vertices(); ++v) {
+    if (out.vertex_map[v] < 0) continue;
+    out.vertex_map[v] = next;
+    positions_[static_cast<std::size_t>(next++)] = positions_[v];
+  }
+  out.vertices_dropped = num_vertices() - static_cast<std::size_t>(next);
+  positions_.resize(static_cast<std::size_t>(next));
+  positions_.shrink_to_fit();
+
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < num_tets(); ++t) {
+    if (out.tet_map[t] < 0) continue;
+    out.tet_map[t] = static_cast<std::int32_t>(kept);
+    Tet verts = tet_verts_[t];
+    for (VertId& v : verts) v = out.vertex(v);
+    tet_verts_[kept] = verts;
+    tet_birth_[kept] = tet_birth_[t];
+    tet_death_[kept] = tet_death_[t];
+    tet_error_[kept] = tet_error_[t];
+    tet_error_inherited_[kept] = tet_error_inherited_[t];
+    tet_boundary_[kept] = tet_boundary_[t];
+    tet_birth_slot_[kept] = tet_birth_slot_[t];
+    tet_death_slot_[kept] = tet_death_slot_[t];
+    ++kept;
+  }
+  out.tets_dropped = num_tets() - kept;
+  const auto shrink = [kept](auto& v) {
+    v.resize(kept);
+    v.shrink_to_fit();
+  };
+  shrink(tet_verts_);
+  shrink(tet_birth_);
+  shrink(tet_death_);
+  shrink(tet_error_);
+  shrink(tet_error_inherited_);
+  shrink(tet_boundary_);
+  shrink(tet_birth_slot_);
+  shrink(tet_death_slot_);
+  // The lists hold live tets only, in place: each keeps its order, so every
+  // tet's slot in them stays.
+  for (auto* lists : {&frag_created_, &frag_replaced_})
+    for (std::vector<TetId>& list : *lists)
+      for (TetId& t : list) t = out.tet(t);
+  ++revision_;
+  std::fill(frag_created_revision_.begin(), frag_created_revision_.end(), revision_);
+  instance_ = InstanceId{};
+  return out;
+}
+
 std::vector<FragId> Mt::parents(FragId f) const {
   std::vector<FragId> out;
   out.reserve(replaced(f).size());

@@ -133,6 +133,26 @@ class Mt {
   std::vector<FragId> parents(FragId f) const;
   std::vector<FragId> children(FragId f) const;
 
+  // --- storage
+  // Drops the dead tets but those in `keep_dead`, and the vertices from
+  // `first_droppable_vertex` on that no live or kept tet uses, renumbering
+  // the rest in their order (fragments keep their ids; every created(f) and
+  // replaced(f) keeps its order). What reclaims the slots that cuts taken
+  // back leave (cut/mt/cut_retraction.h): everything that holds tet or
+  // vertex ids of this MT must follow the returned maps or be rebuilt.
+  // instance() is renewed.
+  struct Compaction {
+    std::vector<std::int32_t> tet_map;     // (old n_tets) new index, -1 dropped
+    std::vector<std::int32_t> vertex_map;  // (old n_vertices) new index, -1 dropped
+    std::size_t tets_dropped = 0, vertices_dropped = 0;
+    TetId tet(TetId t) const { return TetId(tet_map[t.index()]); }
+    VertId vertex(VertId v) const { return VertId(vertex_map[v.index()]); }
+  };
+  Compaction compact(std::size_t first_droppable_vertex, std::span<const TetId> keep_dead = {});
+  // Dead tet slots, and vertices no live tet uses (a pass over the tets).
+  std::size_t num_dead_tets() const { return num_tets() - live_tets_; }
+  std::size_t num_unused_vertices() const;
+
   // --- whole-MT facts
   double fine_volume() const { return fine_volume_; }
   bool boundary_preserved() const { return boundary_preserved_; }

@@ -82,6 +82,23 @@ void TetBvh::rebuild(const Mt& mt) {
   removed_since_mark_.clear();
 }
 
+void TetBvh::renumber(const Mt::Compaction& compaction) {
+  const auto map = [&](std::int32_t& t) {
+    if (t >= 0) t = compaction.tet_map[static_cast<std::size_t>(t)];
+  };
+  for (std::int32_t& t : slot_tet_) map(t);
+  for (std::int32_t& t : extra_tet_) map(t);
+  std::size_t tets = 0;
+  for (const std::int32_t t : compaction.tet_map) tets += t >= 0;
+  std::vector<std::int32_t> where(tets, -1);
+  for (std::size_t t = 0; t < where_.size() && t < compaction.tet_map.size(); ++t)
+    if (where_[t] != -1) where[static_cast<std::size_t>(compaction.tet_map[t])] = where_[t];
+  where_ = std::move(where);
+  marking_ = false;
+  ++mark_generation_;
+  removed_since_mark_.clear();
+}
+
 TetBvh::Mark TetBvh::mark() {
   marking_ = true;
   removed_since_mark_.clear();

@@ -116,18 +116,35 @@ WorldDef flap_def() {
   return def;
 }
 
-// The MT as sorted corner-id tuples of its live tets and its positions.
-std::pair<std::vector<std::array<std::int32_t, 4>>, std::vector<Vec3>> mt_contents(const engine::Mt& mt) {
-  std::vector<std::array<std::int32_t, 4>> tets;
-  for (std::size_t t = 0; t < mt.num_tets(); ++t) {
-    if (!mt.alive(engine::TetId(t))) continue;
-    std::array<std::int32_t, 4> v;
-    for (int i = 0; i < 4; ++i) v[i] = mt.tet(engine::TetId(t))[i].value;
-    std::sort(v.begin(), v.end());
-    tets.push_back(v);
+// A tet as its corners' rest positions, sorted: what it is whatever the
+// numbering (the cutter reclaims dead slots and renumbers, at frames that
+// depend on its budget).
+using TetCorners = std::array<std::array<double, 3>, 4>;
+TetCorners tet_corners(const engine::Mt& mt, engine::TetId t) {
+  TetCorners c;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3& p = mt.position(mt.tet(t)[i]);
+    c[static_cast<std::size_t>(i)] = {p.x(), p.y(), p.z()};
   }
+  std::sort(c.begin(), c.end());
+  return c;
+}
+
+// The MT's live tets, up to numbering, sorted.
+std::vector<TetCorners> mt_contents(const engine::Mt& mt) {
+  std::vector<TetCorners> tets;
+  for (std::size_t t = 0; t < mt.num_tets(); ++t)
+    if (mt.alive(engine::TetId(t))) tets.push_back(tet_corners(mt, engine::TetId(t)));
   std::sort(tets.begin(), tets.end());
-  return {tets, std::vector<Vec3>(mt.positions().begin(), mt.positions().end())};
+  return tets;
+}
+
+// The frontier's tets, up to numbering, sorted.
+std::vector<TetCorners> frontier_contents(const engine::Mt& mt, const engine::Frontier& frontier) {
+  std::vector<TetCorners> tets;
+  for (const engine::TetId t : frontier.tets()) tets.push_back(tet_corners(mt, t));
+  std::sort(tets.begin(), tets.end());
+  return tets;
 }
 
 TEST(World, StrokeCutsOffAFlapThatFallsToTheFloor) {
@@ -306,12 +323,13 @@ TEST(World, TheIncisionOpensBehindTheBladeEveryFrame) {
     for (engine::VertId v : world.frontier().vertices()) n += v.index() >= original;
     return n;
   };
-  std::size_t grew = 0, inside = 0, last = 0;
+  std::size_t grew = 0, inside = 0, last = 0, most_dead = 0;
   int separated_at = -1;
   for (int f = 1; f <= 70; ++f) {
     const FrameMetrics& m = world.step(path.pose_at(world.time()));
     const auto report = world.validate();
     ASSERT_TRUE(report.ok()) << "frame " << f << ": " << report.summary();
+    most_dead = std::max(most_dead, world.mt().num_dead_tets());
     const std::size_t shown = cut_vertices_shown();
     if (f == 10) {
       EXPECT_GT(shown, 0u) << "no incision on the frontier at frame 10";
@@ -332,6 +350,11 @@ TEST(World, TheIncisionOpensBehindTheBladeEveryFrame) {
   ASSERT_EQ(world.strokes().size(), 1u);
   EXPECT_TRUE(world.strokes()[0].finished);
   EXPECT_EQ(world.last_frame().provisional_tets, 0u);
+  // The slots the retracted cuts left were reclaimed whenever they
+  // outnumbered the live tets, during the stroke and after it.
+  const std::size_t bound = std::max(world.mt().num_live_tets(), cut::TimeCriticalCutter::kReclaimMin);
+  EXPECT_LE(most_dead, 2 * bound);
+  EXPECT_LE(world.mt().num_dead_tets(), bound);
 }
 
 // The frontier's tets, ascending.
@@ -460,9 +483,9 @@ TEST(World, FramesThatOnlyCutHiddenFragmentsKeepTheSprings) {
   World world(organ_mt(2000), def);
   int hidden_only = 0, built = 0;
   for (int f = 0; f < 80; ++f) {
-    const std::vector<std::int32_t> before = sorted_tets(world.frontier());
+    const std::vector<TetCorners> before = frontier_contents(world.mt(), world.frontier());
     const FrameMetrics& m = world.step(path.pose_at(world.time()));
-    const bool mesh_changed = sorted_tets(world.frontier()) != before;
+    const bool mesh_changed = frontier_contents(world.mt(), world.frontier()) != before;
     EXPECT_EQ(m.springs_built, mesh_changed ? 1 : 0) << "frame " << f;
     EXPECT_EQ(world.model().num_particles(), world.frontier().vertices().size()) << "frame " << f;
     hidden_only += m.cut_tets > 0 && !mesh_changed;

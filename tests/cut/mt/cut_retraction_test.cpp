@@ -101,6 +101,58 @@ TEST(CutRetraction, AGrowingPartCutAtEveryStepEndsAsItsOneCut) {
   }
 }
 
+// What retracted cuts leave (dead pieces, unused vertices) is dropped by
+// Mt::compact: the MT the same up to numbering, every slot live, every
+// vertex from the first droppable one on used, the ones before it (the
+// mesh's own) keeping their ids, and the maps sending each kept tet and
+// vertex to its new self; the BVH follows (TetBvh::renumber).
+TEST(CutRetraction, CompactingDropsWhatRetractedCutsLeft) {
+  std::mt19937_64 rng(5);
+  for (const std::string name : {"ellipsoid", "liver"}) {
+    Mt mt = cut_test_mt(name);
+    const std::size_t original_vertices = mt.num_vertices();
+    const engine::Aabb box = mt_box(mt);
+    engine::TetBvh bvh(mt);
+    // A kept cut, then cuts taken back, then another kept one.
+    cut::cut_mt(mt, bvh, random_polygon(box, rng, true));
+    for (int i = 0; i < 4; ++i) {
+      const std::size_t fragments = mt.num_fragments();
+      const cut::MtChangeReport report = cut::cut_mt(mt, bvh, random_polygon(box, rng, i % 2 == 0));
+      cut::retract_cut(mt, bvh, report, fragments);
+    }
+    cut::cut_mt(mt, bvh, random_polygon(box, rng, false));
+    ASSERT_GT(mt.num_dead_tets(), 0u) << name;
+    ASSERT_GT(mt.num_unused_vertices(), 0u) << name;
+    const Mt before = mt;
+    const auto canonical = canonical_mt(mt);
+    const engine::Mt::Compaction c = mt.compact(original_vertices);
+    bvh.renumber(c);  // the same tree over the new ids
+    expect_valid(mt, bvh, name);
+    EXPECT_EQ(c.tets_dropped, before.num_dead_tets()) << name;
+    EXPECT_EQ(mt.num_tets(), mt.num_live_tets()) << name;
+    EXPECT_EQ(mt.num_dead_tets(), 0u) << name;
+    EXPECT_EQ(mt.num_unused_vertices(), 0u) << name;  // the mesh's own vertices are all used here
+    EXPECT_EQ(c.vertices_dropped + mt.num_vertices(), before.num_vertices()) << name;
+    EXPECT_TRUE(canonical_mt(mt) == canonical) << name;
+    EXPECT_NE(mt.instance(), before.instance()) << name;
+    for (std::size_t v = 0; v < original_vertices; ++v) ASSERT_EQ(c.vertex_map[v], static_cast<std::int32_t>(v)) << name;
+    for (std::size_t v = 0; v < before.num_vertices(); ++v) {
+      if (c.vertex_map[v] >= 0) {
+        ASSERT_EQ(mt.position(c.vertex(VertId(v))), before.position(VertId(v))) << name;
+      }
+    }
+    for (std::size_t t = 0; t < before.num_tets(); ++t) {
+      const TetId old(t);
+      ASSERT_EQ(c.tet_map[t] >= 0, before.alive(old)) << name << " tet " << t;
+      if (!before.alive(old)) continue;
+      const TetId now = c.tet(old);
+      for (int k = 0; k < 4; ++k) ASSERT_EQ(mt.tet(now)[k], c.vertex(before.tet(old)[k])) << name;
+      EXPECT_EQ(mt.birth(now), before.birth(old)) << name;
+      EXPECT_EQ(mt.death(now), before.death(old)) << name;
+    }
+  }
+}
+
 // Through the time-critical cutter: a provisional cut with hidden jobs left
 // (a budget of one job) is retracted as cleanly, the frontier mapped back.
 TEST(CutRetraction, TheCutterRetractsAProvisionalCutHalfDone) {

@@ -56,6 +56,8 @@ StrokeOutcome cut_progressively(const Mt& original, const Path& path, int steps,
     }
   }
   EXPECT_FALSE(cutter.provisional_held()) << where;
+  // The slots the stroke's retracted cuts left are reclaimed once it ends.
+  EXPECT_LE(mt.num_dead_tets(), std::max(mt.num_live_tets(), cut::TimeCriticalCutter::kReclaimMin)) << where;
   out.pieces = cut::find_pieces(mt).count;
   out.refused = cutter.cuts_refused();
   return out;
