@@ -175,7 +175,7 @@ std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh
     std::size_t kept_before = 0;  // vertices kept below the held cut's first
     for (std::size_t v = 0; v < held_->first_new_vertex; ++v) kept_before += out.vertex_map[v] >= 0;
     held_->first_new_vertex = kept_before;
-    held_->bvh_mark.reset();
+    if (!bvh.marked()) held_->bvh_mark.reset();  // the index's mark survives when it kept what the held cut removed
   }
   return out;
 }

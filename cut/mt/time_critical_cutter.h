@@ -151,8 +151,8 @@ class TimeCriticalCutter {
   };
   // What a cut changed since it started, to take it back: the MT's fragment
   // count and the index when it started, and every change it made.
-  // A reclaim() while it is held renumbers its changes, and the index,
-  // rebuilt, has no mark any more: it is then retracted tet by tet.
+  // A reclaim() while it is held renumbers its changes; should the index
+  // lose its mark then, it is retracted tet by tet.
   struct Transaction {
     std::size_t fragments_before = 0;
     std::size_t first_new_vertex = 0;

@@ -94,9 +94,17 @@ void TetBvh::renumber(const Mt::Compaction& compaction) {
   for (std::size_t t = 0; t < where_.size() && t < compaction.tet_map.size(); ++t)
     if (where_[t] != -1) where[static_cast<std::size_t>(compaction.tet_map[t])] = where_[t];
   where_ = std::move(where);
-  marking_ = false;
-  ++mark_generation_;
-  removed_since_mark_.clear();
+  // The mark holds while every tet removed since it was kept (a held cut's
+  // replaced tets, dead, which its retraction brings back).
+  for (auto& [t, w] : removed_since_mark_) {
+    if (!marking_) break;
+    t = compaction.tet_map[static_cast<std::size_t>(t)];
+    if (t < 0) {
+      marking_ = false;
+      ++mark_generation_;
+      removed_since_mark_.clear();
+    }
+  }
 }
 
 TetBvh::Mark TetBvh::mark() {

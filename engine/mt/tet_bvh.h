@@ -128,8 +128,9 @@ class TetBvh {
 
   // Follows Mt::compact: the same tree and boxes over the tets' new ids
   // (every indexed tet is live, so kept), in O(n_slots + n_tets), where a
-  // rebuild would cost the cut's frame about 10 ms at 60k tets. Forgets the
-  // mark.
+  // rebuild would cost the cut's frame about 10 ms at 60k tets. The mark
+  // holds when the compaction kept every tet removed since it (else it is
+  // forgotten: marked() says which).
   void renumber(const Mt::Compaction& compaction);
 
   // The edits since the last rebuild outnumber half the indexed tets:
