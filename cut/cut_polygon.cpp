@@ -45,6 +45,43 @@ std::array<std::size_t, 3> widest_triangle(const std::vector<Vec3>& p) {
 
 }  // namespace
 
+namespace {
+
+double hull_cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> convex_hull_2d(std::vector<Eigen::Vector2d> p, double eps) {
+  std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return p;
+  std::vector<Eigen::Vector2d> hull(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && hull_cross2(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && hull_cross2(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  hull.resize(k - 1);
+  for (bool removed = true; removed && hull.size() > 3;) {
+    removed = false;
+    for (std::size_t i = 0; i < hull.size() && hull.size() > 3; ++i) {
+      const std::size_t n = hull.size();
+      if (hull_cross2(hull[(i + n - 1) % n], hull[i], hull[(i + 1) % n]) <= eps) {
+        hull.erase(hull.begin() + static_cast<std::ptrdiff_t>(i));
+        removed = true;
+      }
+    }
+  }
+  return hull;
+}
+
+
 CutPolygon CutPolygon::from_points(const std::vector<Vec3>& points, const std::string& source,
                                    const CutPolygonDef& def) {
   const std::size_t n = points.size();
@@ -96,14 +133,21 @@ CutPolygon CutPolygon::from_points(const std::vector<Vec3>& points, const std::s
 
   poly.axis_u_ = (poly.plane_[1] - poly.plane_[0]).normalized();
   poly.axis_v_ = poly.normal_.cross(poly.axis_u_);
-  for (const Vec3& c : poly.corners_) poly.corners2d_.push_back(poly.project(c));
+  poly.finish(points, source);
+  return poly;
+}
+
+void CutPolygon::finish(const std::vector<Vec3>& points, const std::string& source) {
+  const std::size_t n = corners_.size();
+  const double d = diameter_;
+  for (const Vec3& c : corners_) corners2d_.push_back(project(c));
 
   // Convex and simple: every turn is to the left (collinear allowed) and the
   // outline turns once around.
   double turning = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d e0 = poly.corners2d_[(i + 1) % n] - poly.corners2d_[i];
-    const Eigen::Vector2d e1 = poly.corners2d_[(i + 2) % n] - poly.corners2d_[(i + 1) % n];
+    const Eigen::Vector2d e0 = corners2d_[(i + 1) % n] - corners2d_[i];
+    const Eigen::Vector2d e1 = corners2d_[(i + 2) % n] - corners2d_[(i + 1) % n];
     const double c = cross2d(e0, e1);
     if (c < -1e-12 * d * d)
       throw InputError(source + ": not convex at corner " + std::to_string((i + 1) % n + 1) + " " +
@@ -113,11 +157,43 @@ CutPolygon CutPolygon::from_points(const std::vector<Vec3>& points, const std::s
   if (std::abs(turning - 2 * std::numbers::pi) > 1e-6)
     throw InputError(source + ": the outline crosses itself (not a simple convex polygon)");
 
-  poly.box_min_ = poly.box_max_ = poly.corners_[0];
-  for (const Vec3& c : poly.corners_) {
-    poly.box_min_ = poly.box_min_.cwiseMin(c);
-    poly.box_max_ = poly.box_max_.cwiseMax(c);
+  box_min_ = box_max_ = corners_[0];
+  for (const Vec3& c : corners_) {
+    box_min_ = box_min_.cwiseMin(c);
+    box_max_ = box_max_.cwiseMax(c);
   }
+}
+
+CutPolygon CutPolygon::on_plane_of(const CutPolygon& plane, const std::vector<Vec3>& points,
+                                   const std::string& source, const CutPolygonDef& def) {
+  for (const Vec3& p : points)
+    if (!p.allFinite()) throw InputError(source + ": a corner is not finite");
+  CutPolygon poly;
+  poly.plane_ = plane.plane_;
+  poly.normal_ = plane.normal_;
+  poly.origin_ = plane.origin_;
+  poly.axis_u_ = plane.axis_u_;
+  poly.axis_v_ = plane.axis_v_;
+  std::vector<Eigen::Vector2d> flat;
+  flat.reserve(points.size());
+  double extent = 0;
+  for (const Vec3& p : points) {
+    flat.push_back(poly.project(p));
+    extent = std::max(extent, (flat.back() - flat.front()).norm());
+  }
+  // The hull, counter-clockwise about the normal (axis_v_ = normal x axis_u_).
+  flat = convex_hull_2d(std::move(flat), 1e-12 * extent * extent);
+  const std::size_t n = flat.size();
+  if (n < 3) throw InputError(source + ": fewer than 3 corners on the plane");
+  for (const Eigen::Vector2d& q : flat) poly.corners_.push_back(poly.origin_ + q.x() * poly.axis_u_ + q.y() * poly.axis_v_);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      poly.diameter_ = std::max(poly.diameter_, (poly.corners_[i] - poly.corners_[j]).norm());
+  double twice_area = 0;
+  for (std::size_t i = 0; i < n; ++i) twice_area += hull_cross2(flat[0], flat[i], flat[(i + 1) % n]);
+  if (0.5 * twice_area < def.min_relative_area * poly.diameter_ * poly.diameter_)
+    throw InputError(source + ": the corners are collinear on the plane (zero area)");
+  poly.finish(poly.corners_, source);
   return poly;
 }
 

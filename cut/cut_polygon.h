@@ -41,11 +41,19 @@ class CutPolygon {
   // beyond the tolerance, or a non-convex outline.
   static CutPolygon from_points(const std::vector<Vec3>& points, const std::string& source = "cut polygon",
                                 const CutPolygonDef& def = {});
+  // The convex hull of `points` projected onto `plane`'s plane, whose three
+  // frozen corners it keeps bit-exact: every exact side() is `plane`'s (a
+  // stroke's part cut progressively keeps one plane, cut/mt/part_record.h).
+  // Throws engine::InputError when the hull has no area there.
+  static CutPolygon on_plane_of(const CutPolygon& plane, const std::vector<Vec3>& points,
+                                const std::string& source = "cut polygon", const CutPolygonDef& def = {});
 
   // (n) corners, counter-clockwise seen from the tip of normal().
   const std::vector<Vec3>& corners() const { return corners_; }
   std::size_t size() const { return corners_.size(); }
   const Vec3& normal() const { return normal_; }  // unit, from the corners' order
+  // Both decide side() with the same three frozen corners, bit for bit.
+  bool same_plane(const CutPolygon& o) const { return plane_ == o.plane_; }
   double diameter() const { return diameter_; }
   Vec3 box_min() const { return box_min_; }
   Vec3 box_max() const { return box_max_; }
@@ -98,6 +106,9 @@ class CutPolygon {
   };
   Clip clip(const Vec3& p, const Vec3& q) const;
   Eigen::Vector2d project(const Vec3& x) const;
+  // From the corners and the frame: the 2D outline (checked convex and
+  // simple, `points` naming the corners in messages) and the box.
+  void finish(const std::vector<Vec3>& points, const std::string& source);
 
   std::vector<Vec3> corners_;
   std::array<Vec3, 3> plane_;  // three corners, bit-exact, positively oriented with normal_
@@ -115,6 +126,12 @@ class CutPolygon {
 // not move, or moved along itself) are dropped, so the result may be empty.
 std::vector<CutPolygon> sweep_blade(const Vec3& a0, const Vec3& b0, const Vec3& a1, const Vec3& b1,
                                     const CutPolygonDef& def = {});
+
+// Counter-clockwise convex hull (monotone chain, exact on the given
+// doubles), then without corners that are collinear with their neighbours
+// to within `eps` (twice an area): the blade's poses along a straight
+// stroke are collinear only up to rounding.
+std::vector<Eigen::Vector2d> convex_hull_2d(std::vector<Eigen::Vector2d> points, double eps);
 
 // Parses "x,y,z;x,y,z;..." into a polygon (the `--polygon` option). Throws
 // engine::InputError naming `source` and the offending corner.

@@ -1,5 +1,7 @@
 #include "cut/stroke_sweep.h"
 
+#include "engine/input_error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -49,38 +51,6 @@ double cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::V
   return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
 }
 
-// Counter-clockwise convex hull (monotone chain, exact on the given
-// doubles), then without corners that are collinear with their neighbours
-// to within `eps` (twice an area): the blade's poses along a straight stroke
-// are collinear only up to rounding.
-std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> p, double eps) {
-  std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
-  p.erase(std::unique(p.begin(), p.end()), p.end());
-  if (p.size() < 3) return p;
-  std::vector<Eigen::Vector2d> hull(2 * p.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross2(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && cross2(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
-  hull.resize(k - 1);
-  for (bool removed = true; removed && hull.size() > 3;) {
-    removed = false;
-    for (std::size_t i = 0; i < hull.size() && hull.size() > 3; ++i) {
-      const std::size_t n = hull.size();
-      if (cross2(hull[(i + n - 1) % n], hull[i], hull[(i + 1) % n]) <= eps) {
-        hull.erase(hull.begin() + static_cast<std::ptrdiff_t>(i));
-        removed = true;
-      }
-    }
-  }
-  return hull;
-}
-
 double polygon_area(const std::vector<Eigen::Vector2d>& p) {
   double twice = 0;
   for (std::size_t i = 0; i < p.size(); ++i) twice += cross2(Eigen::Vector2d::Zero(), p[i], p[(i + 1) % p.size()]);
@@ -116,7 +86,7 @@ Hull hull_on(const Plane& plane, const std::vector<Vec3>& points, double diamete
     const Vec3 d = p - plane.origin;
     flat.emplace_back(d.dot(plane.u), d.dot(plane.v));
   }
-  h.corners = convex_hull(std::move(flat), 1e-12 * diameter * diameter);
+  h.corners = convex_hull_2d(std::move(flat), 1e-12 * diameter * diameter);
   h.area = h.corners.size() >= 3 ? polygon_area(h.corners) : 0.0;
   return h;
 }
@@ -159,6 +129,11 @@ bool StrokeSweep::extends(const Blade& next, std::vector<Vec3>& corners) const {
   for (const Blade& b : blades_) off(b.first), off(b.second);
   off(next.first), off(next.second);
   if (off_plane > def_.plane_tolerance * diameter) return false;
+  // The part's fixed plane (once it has one) may lie a little further: it
+  // was fitted to the part's first poses.
+  if (plane_ && std::max(std::abs(plane_->signed_distance(next.first)), std::abs(plane_->signed_distance(next.second))) >
+                    def_.fixed_plane_tolerance * diameter)
+    return false;
   // The hull of all poses is the hull of the last one's corners and the new
   // pose: exactly so while the plane stays; as it turns a little, a pose once
   // inside may end up a sliver outside, which only the area test here skips
@@ -194,7 +169,28 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
   sums_.add(base);
   sums_.add(tip);
   hull_corners_ = std::move(corners);
+  if (!plane_ && blades_.size() >= 2) {
+    std::vector<CutPolygon> polygon = polygon_of(hull_corners_);
+    if (!polygon.empty()) {
+      const std::vector<Vec3>& c = polygon.front().corners();
+      Vec3 twice_area = Vec3::Zero();
+      for (std::size_t i = 0; i < c.size(); ++i) twice_area += (c[i] - c[0]).cross(c[(i + 1) % c.size()] - c[0]);
+      const double d = polygon.front().diameter();
+      if (0.5 * twice_area.norm() >= def_.plane_width * d * d) plane_ = std::move(polygon.front());
+    }
+  }
   return out;
+}
+
+std::vector<CutPolygon> StrokeSweep::part_polygon(const std::vector<Vec3>& points) const {
+  if (!plane_) return polygon_of(points);
+  std::vector<CutPolygon> on = polygon_of(points);  // the hull, then on the fixed plane
+  if (on.empty()) return on;
+  try {
+    return {CutPolygon::on_plane_of(*plane_, on.front().corners(), "scalpel stroke")};
+  } catch (const engine::InputError&) {
+    return {};
+  }
 }
 
 StrokeAdvance StrokeSweep::advance(std::span<const BladePose> poses) {
@@ -233,6 +229,7 @@ void StrokeSweep::clear_part() {
   swept_area_ = 0;
   sums_ = {};
   hull_corners_.clear();
+  plane_.reset();
 }
 
 std::vector<CutPolygon> StrokeSweep::finish() {
@@ -243,12 +240,12 @@ std::vector<CutPolygon> StrokeSweep::finish() {
 
 std::vector<CutPolygon> StrokeSweep::close_part() {
   if (blades_.size() < 2) return {};
-  return polygon_of(corner_points(blades_));
+  return part_polygon(corner_points(blades_));
 }
 
 std::optional<CutPolygon> StrokeSweep::current() const {
   if (blades_.size() < 2) return std::nullopt;
-  std::vector<CutPolygon> p = polygon_of(hull_corners_);
+  std::vector<CutPolygon> p = part_polygon(hull_corners_);
   if (p.empty()) return std::nullopt;
   return std::move(p.front());
 }

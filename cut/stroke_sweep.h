@@ -25,6 +25,18 @@
 // overlap cross each other near the turn, as any two cuts may, and no sweep
 // between them is left uncut. (Each polygon's end is still a partial cut of
 // the tets around the turn, so at coarse resolutions a bridge remains there.)
+//
+// The part's plane. A part cut progressively commits the tets its polygon
+// crosses completely, frame by frame (cut/mt/part_record.h), so its plane
+// must not turn as poses are added. Once the part's polygon is
+// `plane_width` wide, its plane is fixed: every later polygon of the part
+// lies on it (CutPolygon::on_plane_of, the same exact plane), and the part
+// also ends when a pose leaves it by more than `fixed_plane_tolerance`
+// (looser than `plane_tolerance`: a part ending wherever a curving blade
+// leaves the plane of its first poses multiplies the junctions between
+// parts, each a bridge at coarse resolutions and a check for the cutter's
+// guard). A stroke whose poses all come in one frame has the same parts and
+// polygons.
 
 #include <optional>
 #include <span>
@@ -40,6 +52,10 @@ namespace mtcut::cut {
 struct StrokeSweepDef {
   double plane_tolerance = 0.02;  // of the part's diameter
   double hull_excess = 0.05;      // relative area the hull may exceed the sweeps by
+  // The part's plane is fixed once its polygon is this wide (area over the
+  // squared diameter; see "The part's plane" above).
+  double plane_width = 0.05;
+  double fixed_plane_tolerance = 0.06;  // of the part's diameter, from its fixed plane
 };
 
 // A pose of the scalpel's blade: base, tip, and whether it cuts.
@@ -74,6 +90,9 @@ class StrokeSweep {
   // they sweep no area): what progressive cutting cuts provisionally every
   // frame until the part ends (cut/mt/cut_retraction.h).
   std::optional<CutPolygon> current() const;
+  // The part in progress has its plane fixed: current() lies on it, now and
+  // until the part ends.
+  bool plane_fixed() const { return plane_.has_value(); }
   // Poses in the part in progress.
   std::size_t part_poses() const { return blades_.size(); }
 
@@ -111,6 +130,9 @@ class StrokeSweep {
   // distance check and close_part() visit every pose.
   PartSums sums_;
   std::vector<Vec3> hull_corners_;  // the part's hull corners (its poses until a hull is taken)
+  std::optional<CutPolygon> plane_;  // the part's fixed plane (its first polygon wide enough)
+  // The part's polygon over `points`, on its fixed plane once there is one.
+  std::vector<CutPolygon> part_polygon(const std::vector<Vec3>& points) const;
 };
 
 // Area of the quad a blade sweeps between two poses (two triangles).

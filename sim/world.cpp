@@ -11,6 +11,7 @@
 #include "absl/container/flat_hash_map.h"
 #include "cut/cut_polygon.h"
 #include "cut/mt/cut_retraction.h"
+#include "engine/input_error.h"
 #include "sim/forces.h"
 #include "sim/rest_space_cut.h"
 #include "sim/state_transfer.h"
@@ -178,10 +179,31 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     for (std::size_t p = 0; p < rest.size(); ++p) rest[p] = mt_.position(model_.particle_vertex[p]);
     for (auto& polygon : advance.ended) polygon = rest_space_polygon(polygon, rest, state_.x);
     std::optional<cut::CutPolygon> current = stroke_.current();
-    if (current) current = rest_space_polygon(*current, rest, state_.x);
+    if (current) {
+      // A part the cutter records (its plane fixed in rest space) grows by
+      // what the blade swept since the part's last cut, carried to rest
+      // space by the map that fits the tissue where the blade is now (the
+      // cutter joins it to the part's polygon: TimeCriticalCutter::recut);
+      // a part's first cut is its whole polygon.
+      std::optional<cut::CutPolygon> swept;
+      if (cutter_.part_record() && advance.ended.empty() && !part_cut_blade_.empty()) {
+        std::vector<Vec3> ends = part_cut_blade_;
+        for (const cut::BladePose& b : blades)
+          if (b.engaged) ends.insert(ends.end(), {b.base, b.tip});
+        try {
+          swept = cut::CutPolygon::on_plane_of(*current, ends, "scalpel sweep");
+        } catch (const engine::InputError&) {
+          // the blade swept no area on the part's plane: its whole polygon
+        }
+      }
+      current = rest_space_polygon(swept ? *swept : *current, rest, state_.x);
+    }
+    part_cut_blade_.clear();
+    if (stroke_.active() && !blades.empty() && blades.back().engaged)
+      part_cut_blade_ = {blades.back().base, blades.back().tip};
     m.cuts_started = advance.ended.size() + (current ? 1 : 0);
-    if (const auto retraction = cutter_.recut(mt_, bvh_, advance.ended, current)) {
-      frontier_ = cut::retract_frontier(mt_, frontier_, *retraction);
+    if (const auto retraction = cutter_.recut(mt_, bvh_, advance.ended, current, stroke_.plane_fixed())) {
+      cut::follow_retraction(mt_, frontier_, *retraction);
       if (m.cuts_started == 0 && retraction->fragments_removed > 0)
         pieces_ = cut::find_pieces(mt_).count;  // the stroke left nothing to cut
     }
@@ -193,7 +215,7 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   cut::follow_cut(mt_, frontier_, result.changes);
   cut_vertices_ += result.changes.made_vertices.size();
   if (result.refused) {  // the cut would have broken the MT (cut_guard.h): taken back
-    frontier_ = cut::retract_frontier(mt_, frontier_, *result.refused);
+    cut::follow_retraction(mt_, frontier_, *result.refused);
     cut_vertices_ -= result.refused_reported_vertices;
     ++m.cuts_refused;
   }

@@ -187,6 +187,9 @@ class World {
   engine::Frontier lod_target_;
   cut::StrokeSweep stroke_;  // the engaged blade's poses, merged into cut polygons
   cut::TimeCriticalCutter cutter_;
+  // The blade's ends at the part's last cut (world space): a recorded part
+  // grows by the sweep from there (run_cut_stage).
+  std::vector<Vec3> part_cut_blade_;
   std::size_t pieces_ = 1;
   std::size_t cut_vertices_ = 0;  // FrameMetrics::cut_vertices
   std::vector<StrokeRecord> strokes_;

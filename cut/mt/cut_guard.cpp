@@ -88,9 +88,11 @@ int boundary_faces_around(const Mt& mt, const Stars& stars, VertId a, VertId b, 
 }  // namespace
 
 engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
-                                   std::size_t first_cut_vertex, std::size_t first_new_vertex) {
+                                   std::size_t first_cut_vertex, std::size_t first_new_vertex, const PartRecord* part) {
   engine::ValidationReport report;
-  const auto earlier = [&](VertId v) { return v.index() >= first_cut_vertex && v.index() < first_new_vertex; };
+  const auto earlier = [&](VertId v) {
+    return v.index() >= first_cut_vertex && v.index() < first_new_vertex && !(part && part->made(v));
+  };
   const auto by_cuts = [&](VertId v) { return v.index() >= first_cut_vertex; };
   std::vector<std::pair<std::int32_t, std::int32_t>> edges;
   std::vector<FragId> fragments;

@@ -31,6 +31,7 @@
 #include <cstddef>
 
 #include "cut/mt/mt_change_report.h"
+#include "cut/mt/part_record.h"
 #include "engine/mt/mt.h"
 #include "engine/mt/tet_bvh.h"
 #include "engine/validation.h"
@@ -39,8 +40,12 @@ namespace mtcut::cut {
 
 // `cut`: everything the finished cut changed; vertices from `first_cut_vertex`
 // on were made by cuts (earlier ones and this), the cut's own from
-// `first_new_vertex` on. Empty when the cut may be kept.
+// `first_new_vertex` on. `part`: the cut is a frame of a stroke's part cut
+// progressively (part_record.h), whose committed points are of the same
+// planar crack as this cut's, not an earlier crack. Empty when the cut may
+// be kept.
 engine::ValidationReport check_cut(const engine::Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
-                                   std::size_t first_cut_vertex, std::size_t first_new_vertex);
+                                   std::size_t first_cut_vertex, std::size_t first_new_vertex,
+                                   const PartRecord* part = nullptr);
 
 }  // namespace mtcut::cut

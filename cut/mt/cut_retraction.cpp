@@ -123,9 +123,19 @@ std::vector<FragId> retract_fragment_set(const engine::Mt& mt, std::span<const F
   return out;
 }
 
-engine::Frontier retract_frontier(const engine::Mt& mt, const engine::Frontier& frontier,
-                                  const CutRetraction& retraction) {
-  return engine::Frontier::from_fragments(mt, retract_fragment_set(mt, frontier.fragments(), retraction));
+void follow_retraction(const engine::Mt& mt, engine::Frontier& frontier, const CutRetraction& retraction) {
+  if (retraction.fragments_removed > 0 || !retraction.merged.empty()) {
+    frontier = engine::Frontier::from_fragments(mt, retract_fragment_set(mt, frontier.fragments(), retraction));
+    return;
+  }
+  std::vector<TetId> tets(retraction.revived);
+  tets.insert(tets.end(), retraction.killed.begin(), retraction.killed.end());
+  std::vector<FragId> births;
+  births.reserve(retraction.revived.size());
+  for (TetId t : retraction.revived) births.push_back(mt.birth(t));
+  std::sort(births.begin(), births.end());
+  births.erase(std::unique(births.begin(), births.end()), births.end());
+  frontier.follow_edit(mt, {}, tets, births);
 }
 
 }  // namespace mtcut::cut

@@ -5,9 +5,10 @@
 // are whole again and the parts it made are removed (they were the last
 // fragments). This is what makes progressive cutting (DESIGN.md,
 // "Progressive cutting") split every tet once from its original: while a
-// stroke's straight part grows, each frame cuts the part's polygon so far
-// provisionally, and the next frame retracts that cut and cuts the grown
-// polygon afresh, so no piece of a provisional split is ever cut again.
+// stroke's straight part grows, each frame cuts the part's front (or, before
+// its plane is fixed, its whole polygon so far) provisionally, and the next
+// frame retracts that cut and cuts the grown part afresh, so no piece of a
+// provisional split is ever cut again (part_record.h).
 //
 // Why vertices stay. The vertices the cut made are left in the MT, unused,
 // and its pieces keep their slots, dead (a tet is never erased, only
@@ -51,9 +52,12 @@ CutRetraction retract_cut(engine::Mt& mt, engine::TetBvh& bvh, const MtChangeRep
 // left out may have had parents outside S).
 std::vector<FragId> retract_fragment_set(const engine::Mt& mt, std::span<const FragId> fragments,
                                          const CutRetraction& retraction);
-// The frontier of that set over the MT as it is now.
-engine::Frontier retract_frontier(const engine::Mt& mt, const engine::Frontier& frontier,
-                                  const CutRetraction& retraction);
+// `frontier` follows the retraction: the frontier of that set over the MT
+// as it is now. A retraction that merged no fragments kept every
+// fragment's region, and the frontier follows it in place
+// (Frontier::follow_edit: the tets revived and killed); else it is rebuilt
+// from the set.
+void follow_retraction(const engine::Mt& mt, engine::Frontier& frontier, const CutRetraction& retraction);
 
 // What the MT must satisfy for `cut` to be retracted: every piece alive or
 // killed by nothing else, every replaced tet dead, every fragment from

@@ -70,6 +70,31 @@ void sort_unique(std::vector<Id>& ids, std::vector<std::uint64_t>& bits) {
   }
 }
 
+// The tet is split by the plane alone: every vertex strictly on a side and
+// every edge it straddles crossed inside the polygon. Its split is then the
+// same under every polygon of the plane that holds these crossings.
+bool crossed_completely(const TetConfig& config) {
+  for (VertexState s : config.vertex)
+    if (!is_strict(s)) return false;
+  for (int k = 0; k < 6; ++k)
+    if (config.straddles(k) && !config.edge_active(k)) return false;
+  return true;
+}
+
+// An edge through which a part's committed crack passes is crossed, for
+// every later cut of the part (its outline may have moved off the point).
+void cover_committed_edges(const Tet& tet, const PartRecord& record, TetConfig& config) {
+  for (int k = 0; k < 6; ++k) {
+    if (!config.straddles(k) || config.edge_active(k)) continue;
+    PointKey key;
+    key.kind = PointKind::kEdgePoint;
+    key.side = 1;
+    key.ids[0] = std::min(tet[engine::kTetEdges[k][0]], tet[engine::kTetEdges[k][1]]).value;
+    key.ids[1] = std::max(tet[engine::kTetEdges[k][0]], tet[engine::kTetEdges[k][1]]).value;
+    if (record.point(key).valid()) config.covered = static_cast<std::uint8_t>(config.covered | 1u << k);
+  }
+}
+
 // The order of new vertex ids (number_points_by_key sorts packed keys in it).
 [[maybe_unused]] bool key_less(const PointKey& a, const PointKey& b) {
   return std::tie(a.kind, a.side, a.ids) < std::tie(b.kind, b.side, b.ids);
@@ -109,22 +134,28 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   engine::Aabb box;
   box.lo = polygon_.box_min() - Vec3::Constant(margin);
   box.hi = polygon_.box_max() + Vec3::Constant(margin);
+  if (def.search) {
+    box.lo = box.lo.cwiseMax(def.search->lo - Vec3::Constant(margin));
+    box.hi = box.hi.cwiseMin(def.search->hi + Vec3::Constant(margin));
+  }
 
   // Tets with every vertex strictly on one side are dropped before the sort,
   // and so are the BVH's nodes that lie on one side of the plane (their
   // deformed tets within `displacement` of them): a cut through the whole
   // object walks only the nodes along its plane, not every tet.
+  // A part's committed pieces are never cut again (part_record.h).
+  const PartRecord* record = def.record;
   std::vector<TetId> found;
   bvh.for_each_overlapping(
       mt, box, [&](const engine::Aabb& node) { return polygon_.box_may_touch_plane(node, displacement); },
       [&](TetId t) {
-        if (classifier.may_be_cut(mt.tet(t))) found.push_back(t);
+        if (!(record && record->owns(t)) && classifier.may_be_cut(mt.tet(t))) found.push_back(t);
         return true;
       });
   sort_unique(found, workspace_->id_bits);  // BVH order must not leak into the result
   classifier.expect_candidates(found.size());
   for (TetId t : found) classifier.add_candidate(mt.tet(t));
-  add_tets_around_on_vertices(mt, bvh, classifier, found);
+  add_tets_around_on_vertices(mt, bvh, classifier, record, found);
   classifier.finalize();
 
   if (table.scheme() != def_.scheme) throw std::invalid_argument("MtCut: the split table is for another scheme");
@@ -138,6 +169,7 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   for (std::size_t i = 0; i < found.size(); ++i) {
     const Tet& tet = mt.tet(found[i]);
     configs[i] = classifier.configure(tet, edge_numbers[i]);
+    if (record) cover_committed_edges(tet, *record, configs[i]);
     split[i] = configs[i].is_cut();
     positive[i] = !split[i] && classifier.side_of_uncut(tet) == VertexState::kPos;
   }
@@ -169,6 +201,12 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
           std::any_of(tet.begin(), tet.end(), [&](VertId v) { return splits(v); });
       if (!on_split_vertex || positive[i]) continue;
     }
+    meets_old_crack_ = meets_old_crack_ || mt.error_inherited(p.tet);
+    if (def.select != CutSelect::kAll && (def.select == CutSelect::kComplete) != (p.split && crossed_completely(configs[i]))) {
+      ++left_whole_;
+      for (VertId v : tet) left_whole_box_.extend(geometry[v.index()]);
+      continue;
+    }
     if (p.split)
       resolve_split(p, tet, configs[i], edge_numbers[i], classifier, table);
     else
@@ -179,8 +217,15 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   edge_point_ = {};  // indexes the scan's numbering, which number_points_by_key changes
   number_points_by_key();
 
-  // Jobs: the fragments creating the pending tets, each with its tets.
-  for (const Pending& p : pending_) jobs_.push_back(mt.birth(p.tet));
+  // Jobs: the fragments creating the pending tets, each with its tets. A
+  // part's cuts also decompose the fragments that replace them: a coarse
+  // tet may be crossed completely frames after the finer tets of its
+  // region, which an earlier commit split (a single cut splits them alike).
+  for (const Pending& p : pending_) {
+    jobs_.push_back(mt.birth(p.tet));
+    if (record && def.select != CutSelect::kFront && mt.death(p.tet).valid() && mt.death(p.tet) != mt.drain())
+      jobs_.push_back(mt.death(p.tet));
+  }
   sort_unique(jobs_, workspace_->id_bits);
   job_first_.assign(jobs_.size() + 1, 0);
   std::vector<std::uint32_t> job_index(pending_.size());
@@ -211,7 +256,7 @@ MtCut::~MtCut() {
 }
 
 void MtCut::add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, CutClassifier& classifier,
-                                        std::vector<TetId>& found) {
+                                        const PartRecord* record, std::vector<TetId>& found) {
   // The cut may pass through a vertex that lies off the polygon's box (up to
   // the classifier's margin), and a tet around it must be classified with
   // the others: its other vertices may lie on the plane too, or make it
@@ -227,7 +272,8 @@ void MtCut::add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, CutClas
     around.clear();
     bvh.for_each_overlapping(mt, at, [&](TetId t) {
       const Tet& tet = mt.tet(t);
-      if (std::any_of(tet.begin(), tet.end(), [&](VertId v) { return classifier.on_so_far(v); }))
+      if (!(record && record->owns(t)) &&
+          std::any_of(tet.begin(), tet.end(), [&](VertId v) { return classifier.on_so_far(v); }))
         around.push_back(t);
       return true;
     });
@@ -327,6 +373,9 @@ void MtCut::resolve_split(Pending& p, const Tet& tet, const TetConfig& config,
     const Label l = recipe.labels[k];
     if (label_kind(l) == LabelKind::kVertex && label_side(l) != LabelSide::kNeg) {
       id_of[k] = tet[label_index(l)].value;  // the vertex itself
+    } else if (const VertId committed = def_.record ? def_.record->point(point_key(tet, l)) : VertId();
+               committed.valid()) {
+      id_of[k] = committed.value;  // a point of the part's committed crack
     } else if (const std::int32_t edge = label_kind(l) == LabelKind::kEdge ? edge_numbers[label_index(l)] : -1;
                edge >= 0) {
       id_of[k] = edge_point_id(edge, tet, l, [&] {
@@ -347,8 +396,10 @@ void MtCut::resolve_relabel(Pending& p, const Tet& tet, const CutClassifier& cla
   // lying in the cut (all its vertices on it) becomes surface.
   Tet moved = tet;
   for (VertId& v : moved)
-    if (splits(v))
-      v = point_id(copy_key(v), [&] { return copy_source(v, classifier.positions()); });
+    if (splits(v)) {
+      const VertId committed = def_.record ? def_.record->point(copy_key(v)) : VertId();
+      v = committed.valid() ? committed : point_id(copy_key(v), [&] { return copy_source(v, classifier.positions()); });
+    }
   for (int f = 0; f < 4; ++f) {
     const auto& fv = kTetFaces[f];
     if (std::all_of(fv.begin(), fv.end(), [&](int c) { return is_on(classifier.state(tet[c])); }))
@@ -431,8 +482,9 @@ void MtCut::process(Mt& mt, TetBvh& bvh, std::size_t job, MtChangeReport& report
   const auto dag_start = Clock::now();
   report.counts.split_seconds += std::chrono::duration<double>(dag_start - start).count();
 
-  // Step 3: UpdateProcessFragment.
-  if (f != mt.root() && f != mt.drain()) {
+  // Step 3: UpdateProcessFragment (not for a part's front: its partial
+  // splits separate nothing, and are taken back).
+  if (f != mt.root() && f != mt.drain() && def_.select != CutSelect::kFront) {
     Decomposition d = decompose_fragment(mt, f, workspace_->decomposition);
     if (d.outcome == DecomposeOutcome::kSplit) {
       ++report.counts.split_fragments;

@@ -51,6 +51,7 @@
 #include "cut/mt/fragment_decomposition.h"
 #include "cut/mt/mt_change_report.h"
 #include "cut/mt/mt_cut_workspace.h"
+#include "cut/mt/part_record.h"
 #include "cut/split_table.h"
 #include "cut/tet_classifier.h"
 #include "cut/tet_splitter.h"
@@ -68,6 +69,16 @@ struct MtCutDef {
   // The polygon continues the previous cut of a stroke (stroke_junction.h);
   // read only while the cut is searched (MtCut's constructor).
   const CutContinuation* continuation = nullptr;
+  // A part cut progressively (part_record.h): its committed pieces are not
+  // searched, its committed points are taken again and their edges count as
+  // crossed, the vertices of its pieces are kept off the cut; `select` says
+  // which found tets change. Read while the cut is searched.
+  const PartRecord* record = nullptr;
+  CutSelect select = CutSelect::kAll;
+  // Every tet the cut may change lies in this box (grown by the snap reach
+  // like the polygon's): a part's frame searches only around its front and
+  // what the polygon gained. Read while the cut is searched.
+  const engine::Aabb* search = nullptr;
 };
 
 // One cut in progress. Not copyable: it holds its workspace (its own, or one
@@ -95,8 +106,15 @@ class MtCut {
   std::size_t jobs_pending() const { return jobs_.size() - jobs_done_; }
   std::size_t jobs_finished() const { return jobs_done_; }
   bool done() const { return jobs_done_ == jobs_.size(); }
-  // Tets found to cut or relabel; points the cut makes.
+  // Tets found to cut or relabel (of those, the ones `select` left whole);
+  // points the cut makes.
   std::size_t tets_to_change() const { return pending_.size(); }
+  std::size_t tets_left_whole() const { return left_whole_; }
+  // Some tet found to change is a piece of an earlier cut (the polygon meets
+  // an old crack there).
+  bool meets_old_crack() const { return meets_old_crack_; }
+  // The box of the tets left whole (in the cut's geometry; empty when none).
+  const engine::Aabb& left_whole_box() const { return left_whole_box_; }
   std::size_t points_to_make() const { return points_.size(); }
   // Time of step 1.
   double find_seconds() const { return find_seconds_; }
@@ -125,7 +143,7 @@ class MtCut {
   // Step 1, after the polygon's box: the tets around every vertex the
   // candidates put on the cut, as candidates too, round after round.
   static void add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, CutClassifier& classifier,
-                                          std::vector<TetId>& found);
+                                          const PartRecord* record, std::vector<TetId>& found);
   // The cut passes through v and splits it (it separates some tets from
   // others); while the cut is searched.
   bool splits(VertId v) const { return workspace_->separating[v.index()] != 0; }
@@ -170,6 +188,9 @@ class MtCut {
   std::vector<Pending> pending_;    // tets to change, in the search's order
   std::vector<Tet> piece_tets_;     // the pieces of every pending tet, final vertex ids
   std::size_t new_tets_ = 0;        // pieces of split tets
+  std::size_t left_whole_ = 0;      // found to change, not of `select`
+  engine::Aabb left_whole_box_;
+  bool meets_old_crack_ = false;
   std::vector<FragId> jobs_;
   std::vector<std::uint32_t> job_first_;  // (jobs + 1) offsets into job_tets_
   std::vector<std::int32_t> job_tets_;    // pending tets each job's fragment creates

@@ -8,18 +8,18 @@ StrokeStep cut_stroke_step(StrokeSweep& stroke, TimeCriticalCutter& cutter, Mt& 
   const StrokeAdvance advance = stroke.advance(poses);
   out.recut = advance.moved || !advance.ended.empty();
   if (out.recut) {
-    out.retraction = cutter.recut(mt, bvh, advance.ended, stroke.current());
-    if (out.retraction) frontier = retract_frontier(mt, frontier, *out.retraction);
+    out.retraction = cutter.recut(mt, bvh, advance.ended, stroke.current(), stroke.plane_fixed());
+    if (out.retraction) follow_retraction(mt, frontier, *out.retraction);
   }
   if (out.recut || cutter.frozen()) {
     out.run = cutter.run(mt, bvh, frontier, budget);
     follow_cut(mt, frontier, out.run.changes);
-    if (out.run.refused) frontier = retract_frontier(mt, frontier, *out.run.refused);
+    if (out.run.refused) follow_retraction(mt, frontier, *out.run.refused);
     // A refusal ends the cutter's call: the cuts queued behind it run now.
     while (out.run.refused && cutter.frozen()) {
       TimeCriticalCutter::RunResult more = cutter.run(mt, bvh, frontier, budget);
       follow_cut(mt, frontier, more.changes);
-      if (more.refused) frontier = retract_frontier(mt, frontier, *more.refused);
+      if (more.refused) follow_retraction(mt, frontier, *more.refused);
       out.run.changes.append(more.changes);
       out.run.cuts_finished += more.cuts_finished;
       if (more.pieces) out.run.pieces = std::move(more.pieces);

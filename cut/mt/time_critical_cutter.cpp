@@ -1,6 +1,7 @@
 #include "cut/mt/time_critical_cutter.h"
 
 #include "cut/mt/cut_guard.h"
+#include "engine/input_error.h"
 
 #include <algorithm>
 #include <chrono>
@@ -21,7 +22,7 @@ void TimeCriticalCutter::submit(const Mt& mt, const CutPolygon& polygon, std::ve
   if (!geometry.empty() && geometry.size() != mt.num_vertices())
     throw std::invalid_argument("TimeCriticalCutter::submit: " + std::to_string(geometry.size()) +
                                 " positions for " + std::to_string(mt.num_vertices()) + " MT vertices");
-  queue_.push_back({polygon, std::move(geometry)});
+  queue_.push_back({polygon, std::move(geometry), false, nullptr, CutSelect::kAll, std::nullopt});
 }
 
 void TimeCriticalCutter::submit_provisional(const Mt& mt, const CutPolygon& polygon) {
@@ -56,11 +57,88 @@ const MtChangeReport* TimeCriticalCutter::provisional_changes() const {
 }
 
 std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
-                                                       const std::optional<CutPolygon>& current) {
+                                                       const std::optional<CutPolygon>& current, bool plane_fixed) {
   std::optional<CutRetraction> out = retract(mt, bvh);
-  for (const CutPolygon& polygon : ended) submit(mt, polygon);
-  if (current) submit_provisional(mt, *current);
+  for (const CutPolygon& polygon : ended) {
+    if (part_) {  // the part in progress ended (the first polygon is its)
+      if (const std::optional<CutPolygon> on = on_part_plane(*part_, polygon)) part_->last = *on;
+      submit_part(*part_, true);
+      part_.reset();
+    } else {
+      submit(mt, polygon);
+    }
+  }
+  if (!current) {
+    if (part_) submit_part(*part_, true);  // the stroke ended with nothing more to cut
+    part_.reset();
+    return out;
+  }
+  if (part_) {
+    std::optional<engine::Aabb> grown;
+    if (const std::optional<CutPolygon> on = on_part_plane(*part_, *current)) {
+      grown = grown_region(part_->last, *on);
+      part_->last = *on;
+    }
+    submit_part(*part_, false, grown);
+    return out;
+  }
+  if (plane_fixed) {
+    part_ = Part{std::make_shared<PartRecord>(*current), *current};
+    submit_part(*part_, false);
+  } else {
+    submit_provisional(mt, *current);  // the plane may still turn
+  }
   return out;
+}
+
+std::optional<CutPolygon> TimeCriticalCutter::on_part_plane(const Part& part, const CutPolygon& polygon) const {
+  const CutPolygon& plane = part.record->plane();
+  if (polygon.same_plane(plane)) return polygon;
+  // The part's polygon only grows: what a frame committed stays inside it
+  // however the next frame's map to rest space moves the outline.
+  std::vector<Vec3> corners = part.last.corners();
+  corners.insert(corners.end(), polygon.corners().begin(), polygon.corners().end());
+  try {
+    return CutPolygon::on_plane_of(plane, corners);
+  } catch (const engine::InputError&) {
+    return std::nullopt;  // degenerate once projected: the part's last polygon stays
+  }
+}
+
+void TimeCriticalCutter::submit_part(const Part& part, bool last, std::optional<engine::Aabb> grown) {
+  if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
+  if (last) {
+    queue_.push_back({part.last, {}, false, part.record, CutSelect::kAll, std::nullopt});
+    return;
+  }
+  if (part.record->committing()) queue_.push_back({part.last, {}, false, part.record, CutSelect::kComplete, grown});
+  queue_.push_back({part.last, {}, true, part.record,
+                    part.record->committing() ? CutSelect::kFront : CutSelect::kAll, std::nullopt});
+  provisional_queued_ = true;
+}
+
+std::optional<engine::Aabb> TimeCriticalCutter::grown_region(const CutPolygon& last, const CutPolygon& next) {
+  const double eps = 1e-9 * std::max(last.diameter(), next.diameter());
+  const auto among = [eps](const Vec3& p, const std::vector<Vec3>& corners) {
+    return std::any_of(corners.begin(), corners.end(), [&](const Vec3& c) { return (c - p).norm() <= eps; });
+  };
+  const std::vector<Vec3>& a = last.corners();
+  const std::vector<Vec3>& b = next.corners();
+  engine::Aabb box;
+  std::size_t shared = 0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (among(b[i], a)) {
+      ++shared;
+      continue;
+    }
+    box.extend(b[i]);
+    box.extend(b[(i + 1) % b.size()]);
+    box.extend(b[(i + b.size() - 1) % b.size()]);
+  }
+  for (const Vec3& c : a)
+    if (!among(c, b)) box.extend(c);
+  if (shared == 0) return std::nullopt;
+  return box;
 }
 
 void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {
@@ -81,13 +159,47 @@ void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {
 void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& frontier) {
   Queued q = std::move(queue_.front());
   queue_.pop_front();
+  // A part that stopped committing cuts its front and the rest as one.
+  if (q.record && !q.record->committing() && q.select != CutSelect::kAll) {
+    if (q.select == CutSelect::kComplete) {  // its front follows it in the queue
+      if (queue_.empty()) throw std::logic_error("TimeCriticalCutter: a part's commit queued without its front");
+      q = std::move(queue_.front());
+      queue_.pop_front();
+    }
+    q.select = CutSelect::kAll;
+  }
   bvh.refresh(mt);  // between two cuts: the index edits of the last one never rebuild mid-cut
   Active a;
   a.provisional = q.provisional;
+  a.record = std::move(q.record);
+  a.select = q.select;
   if (q.provisional) provisional_queued_ = false;
   first_cut_vertex_ = std::min(first_cut_vertex_, mt.num_vertices());
   a.tx = Transaction{mt.num_fragments(), mt.num_vertices(), {}, bvh.mark()};
-  a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def_.cut, table_, &workspace_);
+  MtCutDef def = def_.cut;
+  def.record = a.record.get();
+  def.select = a.select;
+  // A part's frame searches around its front and where its polygon grew
+  // (part_record.h): the tets behind are committed.
+  std::optional<engine::Aabb> search;
+  if (a.record && a.record->front()) {
+    if (a.select == CutSelect::kFront) search = a.record->front();
+    if (a.select == CutSelect::kComplete && q.grown) {
+      search = *a.record->front();
+      search->extend(*q.grown);
+    }
+  }
+  def.search = search ? &*search : nullptr;
+  a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def, table_, &workspace_);
+  if (a.record && a.select == CutSelect::kComplete && a.cut->meets_old_crack()) {
+    // Nothing done yet: the part stops committing, and its provisional cut
+    // (queued next) takes everything it crosses beyond its commits.
+    a.record->stop_committing();
+    a.cut.reset();
+    start_next(mt, bvh, frontier);
+    return;
+  }
+  if (a.record && a.select == CutSelect::kComplete) a.record->set_front(a.cut->left_whole_box());
   const auto jobs = a.cut->jobs();
   for (std::size_t j = 0; j < jobs.size(); ++j)
     if (frontier.is_visible(jobs[j])) a.order.push_back(j);
@@ -124,7 +236,14 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
       a.cut->process(mt, bvh, job, changes);
       a.tx.changes.append(changes);
       call.append(changes);
-      pieces_stale_ = pieces_stale_ || !changes.fragment_splits.empty();
+      // Pieces join finest tets through their vertices and the fragments
+      // above them (mt_pieces.h): they can fall apart where a fragment split
+      // or where a tet of every resolution (born of the root, replaced by
+      // the drain) was split, which a part's commit may do alone.
+      pieces_stale_ = pieces_stale_ || !changes.fragment_splits.empty() ||
+                      std::any_of(changes.replaced.begin(), changes.replaced.end(), [&](const TetReplacement& r) {
+                        return r.birth == mt.root() && r.death == mt.drain();
+                      });
       ++jobs;
       if (!changes.made_vertices.empty() && !queue_.empty()) extend_geometry(changes.made_vertices);
     }
@@ -134,17 +253,28 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     }
     ++result.cuts_finished;
     ++totals_.cuts_finished;
-    const engine::ValidationReport guard = check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex);
+    const engine::ValidationReport guard =
+        check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex, a.record.get());
     if (!guard.ok()) {
       result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &*a.tx.bvh_mark);
       result.refused_reported_vertices = a.tx.changes.made_vertices.size() - call.made_vertices.size();
       result.changes.counts.add(call.counts);
       pieces_stale_ = pieces_stale_ || result.refused->fragments_removed > 0;
       ++refused_;
+      // A part's front is split against its committed tets: with this
+      // frame's commit refused, it waits for the next frame too.
+      if (a.record && a.select == CutSelect::kComplete) {
+        a.record->set_front(std::nullopt);  // its tets are whole again: the next frame searches them all
+        if (!queue_.empty() && queue_.front().record == a.record && queue_.front().select == CutSelect::kFront) {
+          queue_.pop_front();
+          provisional_queued_ = false;
+        }
+      }
       active_.reset();
       break;  // the caller maps its frontier through the retraction before any later cut
     }
     result.changes.append(call);
+    if (a.record && a.select == CutSelect::kComplete) a.record->add(mt, a.tx.changes);
     if (a.provisional) held_ = std::move(a.tx);
     active_.reset();
     if (def_.report_pieces && pieces_stale_) {
@@ -170,6 +300,7 @@ std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh
     for (const TetReplacement& r : held_->changes.replaced) keep.push_back(r.old);
   engine::Mt::Compaction out = mt.compact(std::min(first_cut_vertex_, mt.num_vertices()), keep);
   bvh.renumber(out);
+  if (part_) part_->record->renumber(out);
   if (held_) {
     held_->changes.renumber(out);
     std::size_t kept_before = 0;  // vertices kept below the held cut's first
@@ -201,6 +332,8 @@ engine::ValidationReport TimeCriticalCutter::validate(const Mt& mt) const {
       report.add("cutter: cut in progress: " + p);
   if (provisional_queued_ && (queue_.empty() || !queue_.back().provisional))
     report.add("cutter: a provisional cut is counted as queued but the queue's last entry is not one");
+  if (part_)
+    for (auto& p : part_->record->validate(mt).problems) report.add("cutter: " + p);
   if (!active_) return report;
   const Active& a = *active_;
   for (auto& p : a.cut->validate(mt).problems) report.add(p);

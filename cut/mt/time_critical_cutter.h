@@ -21,11 +21,13 @@
 //     if (!cutter.frozen()) move the frontier (selective refinement).
 //
 // Provisional cuts. Progressive cutting (DESIGN.md, "Progressive cutting";
-// cut_retraction.h) cuts a growing stroke's polygon every frame and takes
-// the last frame's cut back first: submit_provisional() queues a cut that
-// is held, once started, with everything it changed, until retract() undoes
-// it (the MT as before it, up to numbering). At most one is held, and it is
-// the last cut: retract() before submitting anything else.
+// cut_retraction.h, part_record.h) cuts a growing stroke's part every frame
+// and takes the last frame's provisional cut back first: submit_provisional()
+// queues a cut that is held, once started, with everything it changed, until
+// retract() undoes it (the MT as before it, up to numbering). At most one is
+// held, and it is the last cut: retract() before submitting anything else.
+// recut() does a stroke's frame: a part with a fixed plane commits what it
+// crosses completely and holds only its front provisionally.
 //
 // Every cut is a transaction: when its last job is done, check_cut
 // (cut_guard.h) looks where it met older cracks, and a cut that would leave
@@ -46,6 +48,7 @@
 #include "cut/mt/cut_retraction.h"
 #include "cut/mt/mt_cut.h"
 #include "cut/mt/mt_pieces.h"
+#include "cut/mt/part_record.h"
 #include "engine/mt/frontier.h"
 
 namespace mtcut::cut {
@@ -93,13 +96,24 @@ class TimeCriticalCutter {
   bool provisional_held() const { return provisional_queued_ || held_ || (active_ && active_->provisional); }
   // Takes the provisional cut back: a queued one is dropped, a started one
   // (its pending jobs dropped) is undone in `mt` and `bvh`. nullopt when none
-  // had started. The caller maps its frontier (retract_frontier).
+  // had started. The caller maps its frontier (follow_retraction).
   std::optional<CutRetraction> retract(Mt& mt, TetBvh& bvh);
-  // A stroke's frame (cut/stroke_sweep.h): retract(), then queue `ended`
-  // (the parts that ended) for good and `current` (the part in progress)
-  // provisionally, all in rest space. Returns the retraction.
+  // A stroke's frame (cut/stroke_sweep.h), all in rest space: retract(),
+  // then queue `ended` (the parts that ended) for good and `current` (the
+  // part in progress) progressively. The part in progress keeps a record
+  // (part_record.h) from the first frame its plane is fixed (`plane_fixed`:
+  // StrokeSweep::plane_fixed()): each frame its tets crossed completely are
+  // committed, the rest (the front) split provisionally, and the part's end
+  // takes every tet left. Until then the whole polygon is cut
+  // provisionally. A polygon of the part that is not on the record's plane
+  // (the World carries each frame's polygon to rest space anew) is
+  // projected onto it, joined with the part's last polygon. Returns the
+  // retraction.
   std::optional<CutRetraction> recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
-                                     const std::optional<CutPolygon>& current);
+                                     const std::optional<CutPolygon>& current, bool plane_fixed = false);
+  // The record of the part in progress (nullptr when none).
+  const PartRecord* part_record() const { return part_ ? part_->record.get() : nullptr; }
+
   // What the held provisional cut has changed so far (nullptr when none).
   const MtChangeReport* provisional_changes() const;
 
@@ -114,7 +128,7 @@ class TimeCriticalCutter {
     std::optional<MtPieces> pieces;  // after the last cut this call finished
     // A cut that check_cut (cut_guard.h) refused when it finished, taken
     // back: the call stops there, and the caller maps its frontier through
-    // the retraction (retract_frontier) after following `changes`.
+    // the retraction (follow_retraction) after following `changes`.
     std::optional<CutRetraction> refused;
     std::size_t refused_reported_vertices = 0;  // vertices of the refused cut that earlier calls reported
   };
@@ -148,7 +162,27 @@ class TimeCriticalCutter {
     CutPolygon polygon;
     std::vector<Vec3> geometry;  // empty = rest
     bool provisional = false;
+    std::shared_ptr<PartRecord> record;  // a part's cut (part_record.h), with `select`
+    CutSelect select = CutSelect::kAll;
+    // A part's commit: where its polygon grew since the last (nullopt: search it all).
+    std::optional<engine::Aabb> grown;
   };
+  // The part in progress: its record and its last polygon (on its plane).
+  struct Part {
+    std::shared_ptr<PartRecord> record;
+    CutPolygon last;
+  };
+  // Queues the part's cut of `polygon` (on its plane): for good, or its
+  // committed tets then its front provisionally.
+  void submit_part(const Part& part, bool last, std::optional<engine::Aabb> grown = std::nullopt);
+  // Where `next` holds what `last` (of the same plane) does not: the box
+  // of its corners that are not `last`'s, their neighbours, and `last`'s
+  // corners that are not its (nullopt: nothing is shared).
+  static std::optional<engine::Aabb> grown_region(const CutPolygon& last, const CutPolygon& next);
+  // `polygon` on the part's plane, as the hull of it and the part's last
+  // polygon when it is not of that plane already (nullopt when it has no
+  // area there).
+  std::optional<CutPolygon> on_part_plane(const Part& part, const CutPolygon& polygon) const;
   // What a cut changed since it started, to take it back: the MT's fragment
   // count and the index when it started, and every change it made.
   // A reclaim() while it is held renumbers its changes; should the index
@@ -162,6 +196,8 @@ class TimeCriticalCutter {
   struct Active {
     std::unique_ptr<MtCut> cut;
     bool provisional = false;
+    std::shared_ptr<PartRecord> record;  // the committed cut of a part joins it when kept
+    CutSelect select = CutSelect::kAll;
     Transaction tx;
     std::vector<std::size_t> order;   // jobs: visible first, then hidden, ascending within each
     std::size_t visible = 0;          // leading entries of `order` that are visible
@@ -178,6 +214,7 @@ class TimeCriticalCutter {
   std::optional<Transaction> held_;  // the provisional cut, finished and kept until retract()
   std::size_t first_cut_vertex_ = SIZE_MAX;  // the MT's vertex count when the first cut started
   bool provisional_queued_ = false;  // the queue's last entry is provisional
+  std::optional<Part> part_;         // the part in progress, once its plane is fixed
   // A fragment split or a retraction merged parts since pieces were last
   // counted: the next finished cut counts them (else it reports none).
   bool pieces_stale_ = true;

@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+
+#include "engine/input_error.h"
 
 namespace mtcut::cut {
 namespace {
@@ -153,6 +156,40 @@ TEST(CutPolygon, EdgeBetweenFindsAnOutlineEdgeByItsEnds) {
   EXPECT_EQ(square.edge_between(Vec3(0, 1, 0), Vec3(0, 0, 0)), 3);
   EXPECT_EQ(square.edge_between(Vec3(0, 0, 0), Vec3(1, 1, 0)), -1);  // a diagonal
   EXPECT_EQ(square.edge_between(Vec3(1, 0, 1e-6), Vec3(1, 1, 0)), -1);  // beyond 1e-9 of the diameter
+}
+
+// A polygon put on another's plane decides every side with that plane's
+// frozen corners (the same exact answers), lies on it, and is ordered
+// counter-clockwise about its normal whichever order its corners came in.
+TEST(CutPolygon, OnPlaneOfKeepsThePlaneBitForBit) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Vec3 p0(0.1, 0.2, 0.3), e0(1.0, 0.05, 0.01), e1(-0.05, 0.9, 0.1);
+  const CutPolygon plane = CutPolygon::from_points({p0, p0 + e0, p0 + e0 + e1, p0 + e1});
+  for (int round = 0; round < 50; ++round) {
+    // A quad near the plane (off it by up to 1e-3), either orientation.
+    std::vector<Vec3> points;
+    const Vec3 c(u(rng), u(rng), 0.3 + 0.1 * u(rng));
+    const Vec3 a = plane.corners()[1] - plane.corners()[0], b = plane.corners()[3] - plane.corners()[0];
+    for (const auto& [s, t] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})
+      points.push_back(c + s * a + t * b + 1e-3 * u(rng) * plane.normal());
+    if (round % 2) std::reverse(points.begin(), points.end());
+    const CutPolygon on = CutPolygon::on_plane_of(plane, points);
+    EXPECT_TRUE(on.same_plane(plane));
+    EXPECT_NEAR(on.normal().dot(plane.normal()), 1.0, 1e-15);
+    for (const Vec3& corner : on.corners()) EXPECT_NEAR(plane.signed_distance(corner), 0.0, 1e-14);
+    for (int k = 0; k < 20; ++k) {
+      const Vec3 x(u(rng), u(rng), u(rng));
+      EXPECT_EQ(on.side(x), plane.side(x));
+    }
+    // Its inside is where the quad is: the centre projects inside.
+    EXPECT_EQ(on.projects_inside(c + 0.5 * (a + b)), 1);
+  }
+  // Corners that collapse onto a line once projected have no area there.
+  EXPECT_THROW(CutPolygon::on_plane_of(plane, {Vec3(0, 0, 0), Vec3(0, 0, 0) + plane.normal(),
+                                               Vec3(1, 1, 1) - (Vec3(1, 1, 1) - Vec3(0, 0, 0)).dot(plane.normal()) *
+                                                                   plane.normal()}),
+               engine::InputError);
 }
 
 }  // namespace

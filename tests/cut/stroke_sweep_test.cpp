@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace mtcut::cut {
@@ -132,6 +133,40 @@ TEST(StrokeSweep, TurnOutOfThePlaneEndsThePartWhereverThePoseRate) {
 TEST(StrokeSweep, SweepAreaOfATranslatedBlade) {
   EXPECT_NEAR(sweep_area(Vec3(0, 0, 0), Vec3(0, 0, 2), Vec3(3, 0, 0), Vec3(3, 0, 2)), 6.0, 1e-12);
   EXPECT_NEAR(sweep_area(Vec3(0, 0, 0), Vec3(0, 0, 2), Vec3(0, 0, 1), Vec3(0, 0, 3)), 0.0, 1e-12);
+}
+
+// Once a part's polygon is wide enough its plane is fixed: every later
+// polygon of the part is on it, bit for bit, and the part ends where a pose
+// leaves it.
+TEST(StrokeSweep, APartsPlaneIsFixedOnceItIsWide) {
+  StrokeSweep stroke;
+  const auto pose = [](int f) {
+    const double y = -0.06 + 0.002 * f;
+    return std::pair{Vec3(0.04, y, 0.06), Vec3(0.04, y, -0.045)};
+  };
+  std::optional<CutPolygon> first;
+  for (int f = 0; f <= 40; ++f) {
+    const auto [base, tip] = pose(f);
+    ASSERT_TRUE(stroke.add(base, tip).empty()) << "pose " << f;
+    const std::optional<CutPolygon> now = stroke.current();
+    if (!stroke.plane_fixed()) {
+      EXPECT_LT(f, 10) << "the plane is not fixed after " << f << " poses";
+      continue;
+    }
+    ASSERT_TRUE(now.has_value());
+    if (!first) first = now;
+    EXPECT_TRUE(now->same_plane(*first)) << "pose " << f;
+  }
+  ASSERT_TRUE(first.has_value());
+  // A pose well off the plane (a tenth of the part's size sideways) ends
+  // the part there.
+  const auto [base, tip] = pose(41);
+  const Vec3 aside(0.1 * (base - pose(0).first).norm(), 0, 0);
+  EXPECT_EQ(stroke.add(base + aside, tip + aside).size(), 1u) << "the part did not end as the blade left its plane";
+  // The new part is not on the old plane.
+  if (const std::optional<CutPolygon> now = stroke.current()) {
+    EXPECT_FALSE(now->same_plane(*first));
+  }
 }
 
 }  // namespace

@@ -479,7 +479,7 @@ TEST(World, FramesThatOnlyCutHiddenFragmentsKeepTheSprings) {
   const ScalpelPath path = flap_stroke(0.3);
   WorldDef def = flap_def();
   def.lod.enabled = false;  // the finest frontier: only the root is visible
-  def.cut_budget = {CutBudgetDef::Unit::kTets, 20};
+  def.cut_budget = {CutBudgetDef::Unit::kTets, 5};
   World world(organ_mt(2000), def);
   int hidden_only = 0, built = 0;
   for (int f = 0; f < 80; ++f) {

@@ -1,0 +1,67 @@
+#include "cut/mt/part_record.h"
+
+#include <string>
+
+namespace mtcut::cut {
+
+void PartRecord::add(const Mt& mt, const MtChangeReport& commit) {
+  if (owned_.size() < mt.num_tets()) owned_.resize(mt.num_tets(), 0);
+  for (TetId t : commit.made_tets) {
+    num_owned_ += owned_[t.index()] == 0;
+    owned_[t.index()] = 1;
+  }
+  if (made_.size() < mt.num_vertices()) made_.resize(mt.num_vertices(), 0);
+  for (const MadeVertex& made : commit.made_vertices) {
+    points_.emplace(made.key, made.id);
+    made_[made.id.index()] = 1;
+  }
+}
+
+void PartRecord::renumber(const Mt::Compaction& compaction) {
+  std::vector<std::uint8_t> owned(owned_.size(), 0);
+  for (std::size_t t = 0; t < owned_.size(); ++t)
+    if (owned_[t] && compaction.tet_map[t] >= 0) owned[static_cast<std::size_t>(compaction.tet_map[t])] = 1;
+  owned_ = std::move(owned);
+  std::vector<std::uint8_t> made(made_.size(), 0);
+  for (std::size_t v = 0; v < made_.size(); ++v)
+    if (made_[v] && compaction.vertex_map[v] >= 0) made[static_cast<std::size_t>(compaction.vertex_map[v])] = 1;
+  made_ = std::move(made);
+  // Keys name vertices by id (sorted; the renumbering keeps their order).
+  absl::flat_hash_map<PointKey, VertId, PointKeyHash> points;
+  points.reserve(points_.size());
+  for (const auto& [old_key, v] : points_) {
+    PointKey key = old_key;
+    for (std::int32_t& id : key.ids)
+      if (id >= 0) id = compaction.vertex_map[static_cast<std::size_t>(id)];
+    points.emplace(key, compaction.vertex(v));
+  }
+  points_ = std::move(points);
+}
+
+engine::ValidationReport PartRecord::validate(const Mt& mt) const {
+  engine::ValidationReport report;
+  std::size_t owned = 0;
+  std::vector<std::uint8_t> used(mt.num_vertices(), 0);
+  for (std::size_t t = 0; t < owned_.size(); ++t) {
+    if (!owned_[t]) continue;
+    ++owned;
+    if (t >= mt.num_tets() || !mt.alive(TetId(t))) {
+      report.add("part record: committed piece " + std::to_string(t) + " is not a live tet");
+      continue;
+    }
+    for (VertId v : mt.tet(TetId(t))) used[v.index()] = 1;
+  }
+  if (owned != num_owned_) report.add("part record: committed pieces miscounted");
+  std::size_t made = 0;
+  for (const auto& [key, v] : points_) {
+    if (!v.valid() || v.index() >= mt.num_vertices() || !used[v.index()])
+      report.add("part record: committed point " + std::to_string(v.value) + " used by no committed piece");
+    else if (!this->made(v))
+      report.add("part record: committed point " + std::to_string(v.value) + " not marked made");
+  }
+  for (std::uint8_t m : made_) made += m;
+  if (made != points_.size()) report.add("part record: committed points miscounted");
+  return report;
+}
+
+}  // namespace mtcut::cut

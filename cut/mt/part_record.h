@@ -1,0 +1,106 @@
+#pragma once
+// The cut record of a stroke's straight part, cut progressively (DESIGN.md,
+// "Progressive cutting", after Mor and Kanade).
+//
+// Why a record. Every frame the part's polygon grows by the blade's sweep.
+// Recutting the whole polygon each frame (and taking the last frame's cut
+// back) costs the whole part per frame; yet a tet the polygon crosses
+// completely (every edge it straddles crosses the plane inside the polygon,
+// no vertex on the cut) has the same split under every later polygon of the
+// part, since they share one plane and only grow. So each frame is cut in
+// two: the tets crossed completely are committed, split for good, and join
+// the record; the tets of the front (the blade's segment, a vertex on the
+// cut, the outline's sides) are split provisionally and taken back the next
+// frame, to be split afresh from their originals. The record holds what the
+// next frames must agree with:
+//   - the plane: the part's first polygon's, which every later polygon of
+//     the part is projected onto (CutPolygon::on_plane_of), so exact sides
+//     never change from frame to frame;
+//   - the committed pieces (`owns`), which no later cut of the part
+//     searches: a piece of a split is never cut again;
+//   - the committed points by key: a later split through an edge the
+//     committed crack crosses takes the same vertex, whatever the polygon's
+//     outline does there, and counts the edge as crossed.
+// A committed tet has no vertex on the cut, and the plane does not move, so
+// the sides of its vertices stay as they were (a vertex that a later frame
+// snaps onto the cut would change that: the cutter's guard, cut_guard.h,
+// takes such a frame's cut back).
+// Fragments are decomposed only by committed cuts: a provisional split
+// (the front) never separates its tet, so it never separates a fragment.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "absl/container/flat_hash_map.h"
+#include "cut/cut_polygon.h"
+#include "cut/mt/mt_change_report.h"
+#include "engine/mt/bvh.h"
+#include "engine/mt/mt.h"
+#include "engine/validation.h"
+
+namespace mtcut::cut {
+
+using engine::Mt;
+using engine::TetId;
+using engine::VertId;
+
+// Which of the tets a cut finds it changes (MtCutDef::select).
+enum class CutSelect : std::uint8_t {
+  kAll,       // every one: a cut for good, or a part's last
+  kComplete,  // splits of tets the polygon crosses completely: committed to the record
+  kFront,     // the rest (partial splits, relabels): provisional, no fragment decomposed
+};
+
+class PartRecord {
+ public:
+  explicit PartRecord(const CutPolygon& plane) : plane_(plane) {}
+
+  // The part's plane (its first polygon).
+  const CutPolygon& plane() const { return plane_; }
+  bool owns(TetId t) const { return t.index() < owned_.size() && owned_[t.index()] != 0; }
+  // v is a committed point (of the part's one planar crack).
+  bool made(VertId v) const { return v.index() < made_.size() && made_[v.index()] != 0; }
+  // The committed point of `key`, or none.
+  VertId point(const PointKey& key) const {
+    const auto it = points_.find(key);
+    return it == points_.end() ? VertId() : it->second;
+  }
+  bool empty() const { return points_.empty() && num_owned_ == 0; }
+  std::size_t num_owned() const { return num_owned_; }
+  std::size_t num_points() const { return points_.size(); }
+
+  // Where the part's crossed tets that no commit owns lie (beside what the
+  // polygon's growth adds): the box of the tets the last committed cut left
+  // whole, its front. nullopt: anywhere in the polygon (a refused commit
+  // left its tets whole too).
+  const std::optional<engine::Aabb>& front() const { return front_; }
+  void set_front(std::optional<engine::Aabb> box) { front_ = std::move(box); }
+
+  // Whether the part still commits. It stops for good where its polygon
+  // meets an earlier crack (a turn's junction, an older stroke): there a
+  // commit would leave the crossing half made, which the cutter's guard
+  // refuses, so each frame cuts all the part crosses beyond what it
+  // committed provisionally, as one transaction, until the part ends.
+  bool committing() const { return committing_; }
+  void stop_committing() { committing_ = false; }
+
+  // A committed cut finished (and was kept): its pieces and points join.
+  void add(const Mt& mt, const MtChangeReport& commit);
+  // The MT was compacted (Mt::compact): ids follow.
+  void renumber(const Mt::Compaction& compaction);
+
+  // Every owned tet is alive, every point a vertex some owned tet uses.
+  engine::ValidationReport validate(const Mt& mt) const;
+
+ private:
+  CutPolygon plane_;
+  std::vector<std::uint8_t> owned_;  // (tets) 1: a committed piece
+  std::size_t num_owned_ = 0;
+  std::vector<std::uint8_t> made_;   // (vertices) 1: a committed point
+  std::optional<engine::Aabb> front_;
+  bool committing_ = true;
+  absl::flat_hash_map<PointKey, VertId, PointKeyHash> points_;
+};
+
+}  // namespace mtcut::cut
