@@ -236,14 +236,11 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
       a.cut->process(mt, bvh, job, changes);
       a.tx.changes.append(changes);
       call.append(changes);
-      // Pieces join finest tets through their vertices and the fragments
-      // above them (mt_pieces.h): they can fall apart where a fragment split
-      // or where a tet of every resolution (born of the root, replaced by
-      // the drain) was split, which a part's commit may do alone.
-      pieces_stale_ = pieces_stale_ || !changes.fragment_splits.empty() ||
-                      std::any_of(changes.replaced.begin(), changes.replaced.end(), [&](const TetReplacement& r) {
-                        return r.birth == mt.root() && r.death == mt.drain();
-                      });
+      pieces_stale_ = pieces_stale_ || !changes.fragment_splits.empty();
+      a.split_every_level = a.split_every_level ||
+                            std::any_of(changes.replaced.begin(), changes.replaced.end(), [&](const TetReplacement& r) {
+                              return r.birth == mt.root() && r.death == mt.drain();
+                            });
       ++jobs;
       if (!changes.made_vertices.empty() && !queue_.empty()) extend_geometry(changes.made_vertices);
     }
@@ -274,6 +271,14 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
       break;  // the caller maps its frontier through the retraction before any later cut
     }
     result.changes.append(call);
+    // Pieces join finest tets through their vertices and the fragments above
+    // them (mt_pieces.h): they fall apart where a fragment splits, or where
+    // a tet of every resolution (born of the root, replaced by the drain) is
+    // split, which a part's commit may do alone; that one is counted once
+    // the commit leaves no front (a crack with a front inside the tissue
+    // separates nothing but a lobe it went round), or at the part's end.
+    pieces_stale_ = pieces_stale_ || (a.split_every_level && a.select != CutSelect::kFront &&
+                                      !(a.select == CutSelect::kComplete && a.cut->tets_left_whole() > 0));
     if (a.record && a.select == CutSelect::kComplete) a.record->add(mt, a.tx.changes);
     if (a.provisional) held_ = std::move(a.tx);
     active_.reset();

@@ -198,6 +198,7 @@ class TimeCriticalCutter {
     bool provisional = false;
     std::shared_ptr<PartRecord> record;  // the committed cut of a part joins it when kept
     CutSelect select = CutSelect::kAll;
+    bool split_every_level = false;  // split a tet born of the root and replaced by the drain
     Transaction tx;
     std::vector<std::size_t> order;   // jobs: visible first, then hidden, ascending within each
     std::size_t visible = 0;          // leading entries of `order` that are visible
