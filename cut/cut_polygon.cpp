@@ -45,14 +45,6 @@ std::array<std::size_t, 3> widest_triangle(const std::vector<Vec3>& p) {
 
 }  // namespace
 
-namespace {
-
-double hull_cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-}
-
-}  // namespace
-
 std::vector<Eigen::Vector2d> convex_hull_2d(std::vector<Eigen::Vector2d> p, double eps) {
   std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
   p.erase(std::unique(p.begin(), p.end()), p.end());
@@ -60,11 +52,11 @@ std::vector<Eigen::Vector2d> convex_hull_2d(std::vector<Eigen::Vector2d> p, doub
   std::vector<Eigen::Vector2d> hull(2 * p.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && hull_cross2(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    while (k >= 2 && cross2d(hull[k - 1] - hull[k - 2], p[i] - hull[k - 2]) <= 0) --k;
     hull[k++] = p[i];
   }
   for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && hull_cross2(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    while (k >= lower && cross2d(hull[k - 1] - hull[k - 2], p[i] - hull[k - 2]) <= 0) --k;
     hull[k++] = p[i];
   }
   hull.resize(k - 1);
@@ -72,7 +64,7 @@ std::vector<Eigen::Vector2d> convex_hull_2d(std::vector<Eigen::Vector2d> p, doub
     removed = false;
     for (std::size_t i = 0; i < hull.size() && hull.size() > 3; ++i) {
       const std::size_t n = hull.size();
-      if (hull_cross2(hull[(i + n - 1) % n], hull[i], hull[(i + 1) % n]) <= eps) {
+      if (cross2d(hull[i] - hull[(i + n - 1) % n], hull[(i + 1) % n] - hull[(i + n - 1) % n]) <= eps) {
         hull.erase(hull.begin() + static_cast<std::ptrdiff_t>(i));
         removed = true;
       }
@@ -80,7 +72,6 @@ std::vector<Eigen::Vector2d> convex_hull_2d(std::vector<Eigen::Vector2d> p, doub
   }
   return hull;
 }
-
 
 CutPolygon CutPolygon::from_points(const std::vector<Vec3>& points, const std::string& source,
                                    const CutPolygonDef& def) {
@@ -190,7 +181,7 @@ CutPolygon CutPolygon::on_plane_of(const CutPolygon& plane, const std::vector<Ve
     for (std::size_t j = i + 1; j < n; ++j)
       poly.diameter_ = std::max(poly.diameter_, (poly.corners_[i] - poly.corners_[j]).norm());
   double twice_area = 0;
-  for (std::size_t i = 0; i < n; ++i) twice_area += hull_cross2(flat[0], flat[i], flat[(i + 1) % n]);
+  for (std::size_t i = 0; i < n; ++i) twice_area += cross2d(flat[i] - flat[0], flat[(i + 1) % n] - flat[0]);
   if (0.5 * twice_area < def.min_relative_area * poly.diameter_ * poly.diameter_)
     throw InputError(source + ": the corners are collinear on the plane (zero area)");
   poly.finish(poly.corners_, source);

@@ -170,13 +170,10 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
   sums_.add(tip);
   hull_corners_ = std::move(corners);
   if (!plane_ && blades_.size() >= 2) {
-    std::vector<CutPolygon> polygon = polygon_of(hull_corners_);
-    if (!polygon.empty()) {
-      const std::vector<Vec3>& c = polygon.front().corners();
-      Vec3 twice_area = Vec3::Zero();
-      for (std::size_t i = 0; i < c.size(); ++i) twice_area += (c[i] - c[0]).cross(c[(i + 1) % c.size()] - c[0]);
-      const double d = polygon.front().diameter();
-      if (0.5 * twice_area.norm() >= def_.plane_width * d * d) plane_ = std::move(polygon.front());
+    const Hull h = hull_of(hull_corners_);
+    if (h.area >= def_.plane_width * h.diameter * h.diameter) {
+      std::vector<CutPolygon> polygon = polygon_of(hull_corners_);
+      if (!polygon.empty()) plane_ = std::move(polygon.front());
     }
   }
   return out;
@@ -184,12 +181,10 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
 
 std::vector<CutPolygon> StrokeSweep::part_polygon(const std::vector<Vec3>& points) const {
   if (!plane_) return polygon_of(points);
-  std::vector<CutPolygon> on = polygon_of(points);  // the hull, then on the fixed plane
-  if (on.empty()) return on;
   try {
-    return {CutPolygon::on_plane_of(*plane_, on.front().corners(), "scalpel stroke")};
+    return {CutPolygon::on_plane_of(*plane_, points, "scalpel stroke")};  // their hull on the plane
   } catch (const engine::InputError&) {
-    return {};
+    return {};  // no area on the plane
   }
 }
 

@@ -86,12 +86,8 @@ bool crossed_completely(const TetConfig& config) {
 void cover_committed_edges(const Tet& tet, const PartRecord& record, TetConfig& config) {
   for (int k = 0; k < 6; ++k) {
     if (!config.straddles(k) || config.edge_active(k)) continue;
-    PointKey key;
-    key.kind = PointKind::kEdgePoint;
-    key.side = 1;
-    key.ids[0] = std::min(tet[engine::kTetEdges[k][0]], tet[engine::kTetEdges[k][1]]).value;
-    key.ids[1] = std::max(tet[engine::kTetEdges[k][0]], tet[engine::kTetEdges[k][1]]).value;
-    if (record.point(key).valid()) config.covered = static_cast<std::uint8_t>(config.covered | 1u << k);
+    if (record.point(point_key(tet, make_label(LabelKind::kEdge, k, LabelSide::kPos))).valid())
+      config.covered = static_cast<std::uint8_t>(config.covered | 1u << k);
   }
 }
 

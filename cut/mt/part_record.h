@@ -66,9 +66,7 @@ class PartRecord {
     const auto it = points_.find(key);
     return it == points_.end() ? VertId() : it->second;
   }
-  bool empty() const { return points_.empty() && num_owned_ == 0; }
   std::size_t num_owned() const { return num_owned_; }
-  std::size_t num_points() const { return points_.size(); }
 
   // Where the part's crossed tets that no commit owns lie (beside what the
   // polygon's growth adds): the box of the tets the last committed cut left

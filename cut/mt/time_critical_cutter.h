@@ -110,7 +110,7 @@ class TimeCriticalCutter {
   // projected onto it, joined with the part's last polygon. Returns the
   // retraction.
   std::optional<CutRetraction> recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
-                                     const std::optional<CutPolygon>& current, bool plane_fixed = false);
+                                     const std::optional<CutPolygon>& current, bool plane_fixed);
   // The record of the part in progress (nullptr when none).
   const PartRecord* part_record() const { return part_ ? part_->record.get() : nullptr; }
 
