@@ -181,8 +181,12 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
 
 std::vector<CutPolygon> StrokeSweep::part_polygon(const std::vector<Vec3>& points) const {
   if (!plane_) return polygon_of(points);
+  // The hull on the poses' best plane, then on the fixed one: the best
+  // plane's hull drops the corners that are collinear to rounding there.
+  std::vector<CutPolygon> on = polygon_of(points);
+  if (on.empty()) return on;
   try {
-    return {CutPolygon::on_plane_of(*plane_, points, "scalpel stroke")};  // their hull on the plane
+    return {CutPolygon::on_plane_of(*plane_, on.front().corners(), "scalpel stroke")};
   } catch (const engine::InputError&) {
     return {};  // no area on the plane
   }
