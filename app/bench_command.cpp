@@ -76,6 +76,8 @@ void register_bench_command(CLI::App& app) {
   stroke->add_option("--runs", stroke_def->runs, "runs per stroke and step count (median of each figure)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  stroke->add_option("--strokes", stroke_def->strokes, "the strokes to cut (default: all)")
+      ->check(CLI::IsMember({"straight", "curved", "l_turn", "tip_inside"}));
   stroke->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
   stroke->callback([stroke_def, json] { print(run_stroke_bench(*stroke_def), *json); });
 }

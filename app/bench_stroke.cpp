@@ -124,6 +124,8 @@ nlohmann::ordered_json bench_organ(const std::string& name, const engine::Mt& mt
   nlohmann::ordered_json strokes = nlohmann::ordered_json::array();
   constexpr int kOnePolygonSamples = 1000;
   for (const StrokeShape& shape : shapes()) {
+    if (!def.strokes.empty() && std::find(def.strokes.begin(), def.strokes.end(), shape.name) == def.strokes.end())
+      continue;
     const StrokeRun one = cut_stroke(mt, shape, 1, kOnePolygonSamples);
     nlohmann::ordered_json row;
     row["stroke"] = shape.name;

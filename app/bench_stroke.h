@@ -22,6 +22,7 @@ struct StrokeBenchDef {
   int organ_tets = 8000;  // target tets of the builtin organ (and of a builtin given as the real mesh)
   std::vector<int> steps{60, 240, 1000};
   int runs = 3;  // timed runs per stroke and step count (median of each figure)
+  std::vector<std::string> strokes;  // the strokes to cut, by name (empty: all four)
 };
 
 // Throws InputError for a bad mesh.

@@ -207,6 +207,26 @@ bool CutPolygon::box_may_touch_plane(const engine::Aabb& box, double slack) cons
   return std::abs(signed_distance(centre)) <= reach + rounding;  // false for an empty box (NaN centre)
 }
 
+bool CutPolygon::box_projects_inside(const engine::Aabb& box, double slack) const {
+  if (!(box.lo.array() <= box.hi.array()).all()) return false;  // empty
+  const Vec3 lo = box.lo - Vec3::Constant(slack), hi = box.hi + Vec3::Constant(slack);
+  // The box's projection is the hull of its corners' (the outline is
+  // convex); each corner inside every edge's line by far more than the
+  // rounding of project() and cross2d.
+  const double rounding = 1e-9 * diameter_ * ((box.center() - origin_).norm() + (hi - lo).norm() + diameter_);
+  const std::size_t n = corners2d_.size();
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 x((c & 1) ? hi.x() : lo.x(), (c & 2) ? hi.y() : lo.y(), (c & 4) ? hi.z() : lo.z());
+    const Eigen::Vector2d q = project(x);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Vector2d& a = corners2d_[i];
+      const Eigen::Vector2d& b = corners2d_[(i + 1) % n];
+      if (cross2d(b - a, q - a) <= rounding) return false;
+    }
+  }
+  return true;
+}
+
 int CutPolygon::line_crossing(const Vec3& a, const Vec3& b) const {
   bool pos = false, neg = false, zero = false;
   const std::size_t n = corners_.size();

@@ -1,11 +1,14 @@
 #include "cut/mt/cut_guard.h"
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <vector>
 
+#include "absl/container/flat_hash_map.h"
 #include "cut/mt/time_critical_cutter.h"
 #include "engine/predicates.h"
+#include "engine/tet_adjacency.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {
@@ -87,8 +90,71 @@ int boundary_faces_around(const Mt& mt, const Stars& stars, VertId a, VertId b, 
 
 }  // namespace
 
+std::vector<FragId> decomposed_fragments(const MtChangeReport& cut) {
+  std::vector<FragId> out;
+  for (const FragmentSplit& s : cut.fragment_splits) {
+    out.push_back(s.old);
+    out.insert(out.end(), s.parts.begin(), s.parts.end());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// The sum, per fragment, of its changed tets' unmasked faces with their
+// orientation's sign: + pieces, - killed tets; created side minus replaced.
+std::vector<FragId> fragments_out_of_balance(const Mt& mt, const MtChangeReport& cut) {
+  const std::vector<FragId> skip = decomposed_fragments(cut);
+  struct Term {
+    std::int32_t fragment;
+    std::array<std::int32_t, 3> face;  // ascending ids
+    int coefficient;
+    auto key() const { return std::tie(fragment, face); }
+  };
+  std::vector<Term> terms;
+  const auto add = [&](const engine::Tet& v, engine::FaceMask mask, FragId birth, FragId death, int sign) {
+    for (int f = 0; f < 4; ++f) {
+      if (mask & (1u << f)) continue;
+      const std::array<VertId, 3> outward = engine::face_vertices(v, f);
+      std::array<std::int32_t, 3> face{outward[0].value, outward[1].value, outward[2].value};
+      // The orientation's sign: the parity of the sort.
+      int parity = 1;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 2 - i; ++j)
+          if (face[j] > face[j + 1]) {
+            std::swap(face[j], face[j + 1]);
+            parity = -parity;
+          }
+      for (const auto& [fragment, side] : {std::pair{birth, 1}, std::pair{death, -1}})
+        if (fragment.valid() && fragment != mt.root() && fragment != mt.drain() &&
+            !std::binary_search(skip.begin(), skip.end(), fragment))
+          terms.push_back({fragment.value, face, sign * side * parity});
+    }
+  };
+  for (const TetReplacement& r : cut.replaced) {
+    // A killed tet's fragments are the replacement's; its pieces were born
+    // and died in the same ones (only a decomposition, skipped, moves them).
+    add(mt.tet(r.old), mt.boundary_mask(r.old), r.birth, r.death, -1);
+    for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {
+      const TetId t = cut.made_tets[i];
+      add(mt.tet(t), mt.boundary_mask(t), r.birth, r.death, 1);
+    }
+  }
+  std::sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.key() < b.key(); });
+  std::vector<FragId> out;
+  for (std::size_t i = 0; i < terms.size();) {
+    std::size_t j = i;
+    int sum = 0;
+    for (; j < terms.size() && terms[j].key() == terms[i].key(); ++j) sum += terms[j].coefficient;
+    if (sum != 0 && (out.empty() || out.back().value != terms[i].fragment)) out.push_back(FragId(terms[i].fragment));
+    i = j;
+  }
+  return out;
+}
+
 engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
-                                   std::size_t first_cut_vertex, std::size_t first_new_vertex, const PartRecord* part) {
+                                   std::size_t first_cut_vertex, std::size_t first_new_vertex, const PartRecord* part,
+                                   bool fragments_valid) {
   engine::ValidationReport report;
   const auto earlier = [&](VertId v) {
     return v.index() >= first_cut_vertex && v.index() < first_new_vertex && !(part && part->made(v));
@@ -120,15 +186,29 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  // Every fragment where the new crack meets an old one (it holds a piece of
-  // an earlier cut that this one split or relabelled), and the parts it
-  // fell into, still replaces the same region: there the cut may bend
-  // differently in the fragment's two tessellations. Elsewhere both
-  // tessellations see the same plane through tets no cut had touched.
+  // Every fragment the cut changed still replaces the same region: where
+  // the new crack meets an old one it may bend differently in a fragment's
+  // two tessellations. When every fragment was valid before the cut, a
+  // fragment it did not decompose is checked by what it changed there
+  // (fragments_out_of_balance). A part's commits leave fragments invalid
+  // until its front or end is cut (a commit splits the finer tets of a
+  // fragment that the polygon crosses completely, the coarser ones only
+  // the front or the end do: part_record.h). So there, and where the cut
+  // decomposed a fragment (its parts did not exist before), the fragments
+  // where the new crack meets an old one (they hold a piece of an earlier
+  // cut that this one split or relabelled) are checked whole, with their
+  // parts.
+  const std::vector<FragId> decomposed = decomposed_fragments(cut);
+  if (fragments_valid)
+    for (FragId f : fragments_out_of_balance(mt, cut))
+      report.add("cut: fragment " + std::to_string(f.value) +
+                 ": its tets do not fill the region of the tets it replaces");
   for (const TetReplacement& r : cut.replaced) {
     if (!mt.error_inherited(r.old) && r.count != 1) continue;
     for (FragId f : {r.birth, r.death})
-      if (f.valid() && f != mt.root() && f != mt.drain()) fragments.push_back(f);
+      if (f.valid() && f != mt.root() && f != mt.drain() &&
+          (!fragments_valid || std::binary_search(decomposed.begin(), decomposed.end(), f)))
+        fragments.push_back(f);
   }
   fragments = map_fragment_set(fragments, cut.fragment_splits);
   for (FragId f : fragments)

@@ -130,9 +130,10 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   engine::Aabb box;
   box.lo = polygon_.box_min() - Vec3::Constant(margin);
   box.hi = polygon_.box_max() + Vec3::Constant(margin);
+  engine::Aabb near_front = box;
   if (def.search) {
-    box.lo = box.lo.cwiseMax(def.search->lo - Vec3::Constant(margin));
-    box.hi = box.hi.cwiseMin(def.search->hi + Vec3::Constant(margin));
+    near_front.lo = box.lo.cwiseMax(def.search->lo - Vec3::Constant(margin));
+    near_front.hi = box.hi.cwiseMin(def.search->hi + Vec3::Constant(margin));
   }
 
   // Tets with every vertex strictly on one side are dropped before the sort,
@@ -142,12 +143,24 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   // A part's committed pieces are never cut again (part_record.h).
   const PartRecord* record = def.record;
   std::vector<TetId> found;
-  bvh.for_each_overlapping(
-      mt, box, [&](const engine::Aabb& node) { return polygon_.box_may_touch_plane(node, displacement); },
-      [&](TetId t) {
-        if (!(record && record->owns(t)) && classifier.may_be_cut(mt.tet(t))) found.push_back(t);
-        return true;
-      });
+  const auto add = [&](TetId t) {
+    if (!(record && record->owns(t)) && classifier.may_be_cut(mt.tet(t))) found.push_back(t);
+    return true;
+  };
+  if (def.search || !def.grown_from) {
+    bvh.for_each_overlapping(
+        mt, def.search ? near_front : box,
+        [&](const engine::Aabb& node) { return polygon_.box_may_touch_plane(node, displacement); }, add);
+  }
+  if (def.grown_from) {
+    bvh.for_each_overlapping(
+        mt, box,
+        [&](const engine::Aabb& node) {
+          return polygon_.box_may_touch_plane(node, displacement) &&
+                 !def.grown_from->box_projects_inside(node, margin);
+        },
+        add);
+  }
   sort_unique(found, workspace_->id_bits);  // BVH order must not leak into the result
   classifier.expect_candidates(found.size());
   for (TetId t : found) classifier.add_candidate(mt.tet(t));

@@ -75,10 +75,14 @@ struct MtCutDef {
   // which found tets change. Read while the cut is searched.
   const PartRecord* record = nullptr;
   CutSelect select = CutSelect::kAll;
-  // Every tet the cut may change lies in this box (grown by the snap reach
-  // like the polygon's): a part's frame searches only around its front and
-  // what the polygon gained. Read while the cut is searched.
+  // Every tet the cut may change lies in the box `search` (grown by the
+  // snap reach like the polygon's), or, when `grown_from` is given too, does
+  // not project inside `grown_from` (a polygon of the same plane): a part's
+  // frame searches only around its front and where its polygon grew, and
+  // walks none of the index's nodes that lie behind. Read while the cut is
+  // searched.
   const engine::Aabb* search = nullptr;
+  const CutPolygon* grown_from = nullptr;
 };
 
 // One cut in progress. Not copyable: it holds its workspace (its own, or one

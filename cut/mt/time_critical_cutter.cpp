@@ -74,12 +74,9 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     return out;
   }
   if (part_) {
-    std::optional<engine::Aabb> grown;
-    if (const std::optional<CutPolygon> on = on_part_plane(*part_, *current)) {
-      grown = grown_region(part_->last, *on);
-      part_->last = *on;
-    }
-    submit_part(*part_, false, grown);
+    CutPolygon before = part_->last;
+    if (const std::optional<CutPolygon> on = on_part_plane(*part_, *current)) part_->last = *on;
+    submit_part(*part_, false, std::move(before));
     return out;
   }
   if (plane_fixed) {
@@ -105,40 +102,17 @@ std::optional<CutPolygon> TimeCriticalCutter::on_part_plane(const Part& part, co
   }
 }
 
-void TimeCriticalCutter::submit_part(const Part& part, bool last, std::optional<engine::Aabb> grown) {
+void TimeCriticalCutter::submit_part(const Part& part, bool last, std::optional<CutPolygon> grown_from) {
   if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
   if (last) {
     queue_.push_back({part.last, {}, false, part.record, CutSelect::kAll, std::nullopt});
     return;
   }
-  if (part.record->committing()) queue_.push_back({part.last, {}, false, part.record, CutSelect::kComplete, grown});
+  if (part.record->committing())
+    queue_.push_back({part.last, {}, false, part.record, CutSelect::kComplete, std::move(grown_from)});
   queue_.push_back({part.last, {}, true, part.record,
                     part.record->committing() ? CutSelect::kFront : CutSelect::kAll, std::nullopt});
   provisional_queued_ = true;
-}
-
-std::optional<engine::Aabb> TimeCriticalCutter::grown_region(const CutPolygon& last, const CutPolygon& next) {
-  const double eps = 1e-9 * std::max(last.diameter(), next.diameter());
-  const auto among = [eps](const Vec3& p, const std::vector<Vec3>& corners) {
-    return std::any_of(corners.begin(), corners.end(), [&](const Vec3& c) { return (c - p).norm() <= eps; });
-  };
-  const std::vector<Vec3>& a = last.corners();
-  const std::vector<Vec3>& b = next.corners();
-  engine::Aabb box;
-  std::size_t shared = 0;
-  for (std::size_t i = 0; i < b.size(); ++i) {
-    if (among(b[i], a)) {
-      ++shared;
-      continue;
-    }
-    box.extend(b[i]);
-    box.extend(b[(i + 1) % b.size()]);
-    box.extend(b[(i + b.size() - 1) % b.size()]);
-  }
-  for (const Vec3& c : a)
-    if (!among(c, b)) box.extend(c);
-  if (shared == 0) return std::nullopt;
-  return box;
 }
 
 void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {
@@ -184,9 +158,9 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   std::optional<engine::Aabb> search;
   if (a.record && a.record->front()) {
     if (a.select == CutSelect::kFront) search = a.record->front();
-    if (a.select == CutSelect::kComplete && q.grown) {
-      search = *a.record->front();
-      search->extend(*q.grown);
+    if (a.select == CutSelect::kComplete && q.grown_from) {
+      search = a.record->front();
+      def.grown_from = &*q.grown_from;
     }
   }
   def.search = search ? &*search : nullptr;
@@ -250,8 +224,13 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     }
     ++result.cuts_finished;
     ++totals_.cuts_finished;
-    const engine::ValidationReport guard =
-        check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex, a.record.get());
+    // Every fragment is valid before and after a cut, except around a
+    // part's commits (part_record.h): a commit, and the front or end of a
+    // part that committed something, are checked without that premise.
+    const bool fragments_valid =
+        a.select != CutSelect::kComplete && (!a.record || a.record->num_owned() == 0);
+    const engine::ValidationReport guard = check_cut(mt, bvh, a.tx.changes, first_cut_vertex_,
+                                                     a.tx.first_new_vertex, a.record.get(), fragments_valid);
     if (!guard.ok()) {
       result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &*a.tx.bvh_mark);
       result.refused_reported_vertices = a.tx.changes.made_vertices.size() - call.made_vertices.size();
@@ -274,15 +253,18 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     // Pieces join finest tets through their vertices and the fragments above
     // them (mt_pieces.h): they fall apart where a fragment splits, or where
     // a tet of every resolution (born of the root, replaced by the drain) is
-    // split, which a part's commit may do alone; that one is counted once
-    // the commit leaves no front (a crack with a front inside the tissue
-    // separates nothing but a lobe it went round), or at the part's end.
-    pieces_stale_ = pieces_stale_ || (a.split_every_level && a.select != CutSelect::kFront &&
-                                      !(a.select == CutSelect::kComplete && a.cut->tets_left_whole() > 0));
+    // split, which a part's commit may do alone.
+    pieces_stale_ = pieces_stale_ || (a.split_every_level && a.select != CutSelect::kFront);
     if (a.record && a.select == CutSelect::kComplete) a.record->add(mt, a.tx.changes);
     if (a.provisional) held_ = std::move(a.tx);
     active_.reset();
-    if (def_.report_pieces && pieces_stale_) {
+    // A part's crack with a front inside the tissue (a commit that left
+    // tets whole, and the front cut behind it) separates nothing but a lobe
+    // it went round: its pieces are counted once a commit leaves no front,
+    // or at the part's end, not every frame (a pass over the MT each).
+    const bool front_open = a.record && (a.select == CutSelect::kFront ||
+                                         (a.select == CutSelect::kComplete && a.cut->tets_left_whole() > 0));
+    if (def_.report_pieces && pieces_stale_ && !front_open) {
       result.pieces = find_pieces(mt);
       pieces_stale_ = false;
     }

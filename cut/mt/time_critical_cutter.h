@@ -121,7 +121,9 @@ class TimeCriticalCutter {
   // (frontier: the World's, mapped after every call). Returns what changed;
   // `pieces` is filled when the call finished a cut, def.report_pieces and
   // the pieces may have changed since they were last counted (a fragment
-  // split, or a retraction that merged parts).
+  // split, or a retraction that merged parts), except while a part's crack
+  // has a front inside the tissue: its pieces are counted when a commit
+  // leaves no front, or at the part's end.
   struct RunResult {
     MtChangeReport changes;          // of the cuts kept (and of the one in progress)
     std::size_t cuts_finished = 0;   // kept or refused
@@ -164,8 +166,9 @@ class TimeCriticalCutter {
     bool provisional = false;
     std::shared_ptr<PartRecord> record;  // a part's cut (part_record.h), with `select`
     CutSelect select = CutSelect::kAll;
-    // A part's commit: where its polygon grew since the last (nullopt: search it all).
-    std::optional<engine::Aabb> grown;
+    // A part's commit: its polygon of the last frame, which the commit
+    // searches only outside of, beside the front (nullopt: search it all).
+    std::optional<CutPolygon> grown_from;
   };
   // The part in progress: its record and its last polygon (on its plane).
   struct Part {
@@ -174,11 +177,7 @@ class TimeCriticalCutter {
   };
   // Queues the part's cut of `polygon` (on its plane): for good, or its
   // committed tets then its front provisionally.
-  void submit_part(const Part& part, bool last, std::optional<engine::Aabb> grown = std::nullopt);
-  // Where `next` holds what `last` (of the same plane) does not: the box
-  // of its corners that are not `last`'s, their neighbours, and `last`'s
-  // corners that are not its (nullopt: nothing is shared).
-  static std::optional<engine::Aabb> grown_region(const CutPolygon& last, const CutPolygon& next);
+  void submit_part(const Part& part, bool last, std::optional<CutPolygon> grown_from = std::nullopt);
   // `polygon` on the part's plane, as the hull of it and the part's last
   // polygon when it is not of that plane already (nullopt when it has no
   // area there).
