@@ -1,5 +1,6 @@
-// CutPolygon's box test against its plane, which prunes the cut's search:
-// a box it rejects must hold no point on the plane or across it; where a
+// CutPolygon's box tests, which prune the cut's search: a box it rejects as
+// off the plane must hold no point on the plane or across it, one it
+// accepts as projecting inside no point projecting outside; where a
 // segment last lies inside the polygon; its edges by their ends.
 #include "cut/cut_polygon.h"
 
@@ -55,6 +56,42 @@ TEST(CutPolygon, BoxesAwayFromThePlaneLieOnOneSide) {
   // Both outcomes are exercised.
   EXPECT_GT(rejected, 200u);
   EXPECT_GT(kept, 200u);
+}
+
+// A box box_projects_inside accepts has every point projecting strictly
+// inside (the exact projects_inside); one that holds a point projecting
+// onto or outside the outline is never accepted.
+TEST(CutPolygon, BoxesThatProjectInsideHoldNoPointOutside) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> coord(-1, 1), size(0, 0.6), slack_of(0, 0.05);
+  std::size_t accepted = 0, refused = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec3 a = Vec3(coord(rng), coord(rng), coord(rng)).normalized();
+    const Vec3 b = a.cross(Vec3(coord(rng), coord(rng), coord(rng))).normalized();
+    const double h = 0.5 + size(rng);
+    const CutPolygon polygon = CutPolygon::from_points({h * (a + b), h * (b - a), -h * (a + b), h * (a - b)});
+    Aabb box;
+    box.extend(Vec3(coord(rng), coord(rng), coord(rng)) * 0.6);
+    box.extend(Vec3(box.lo + Vec3(size(rng), size(rng), size(rng)) * 0.5));
+    const double slack = trial % 2 ? slack_of(rng) : 0.0;
+    bool outside = false;  // a sampled point projects onto or outside the outline
+    for (int i = 0; i < 50 && !outside; ++i) outside = polygon.projects_inside(point_in(box, slack, rng)) <= 0;
+    if (!polygon.box_projects_inside(box, slack)) {
+      ++refused;
+      continue;
+    }
+    ++accepted;
+    ASSERT_FALSE(outside) << trial;
+  }
+  EXPECT_GT(accepted, 200u);
+  EXPECT_GT(refused, 200u);
+  // A box reaching past the outline, or empty, is refused; a tall box over
+  // the inside (its section projects inside) is accepted.
+  const CutPolygon square = CutPolygon::from_points({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+  EXPECT_TRUE(square.box_projects_inside(Aabb{Vec3(0.2, 0.2, -5), Vec3(0.8, 0.8, 5)}));
+  EXPECT_FALSE(square.box_projects_inside(Aabb{Vec3(0.2, 0.2, -5), Vec3(1.0, 0.8, 5)}));  // onto the outline
+  EXPECT_FALSE(square.box_projects_inside(Aabb{Vec3(0.2, 0.2, 0), Vec3(0.8, 0.8, 0)}, 0.25));  // its slack reaches out
+  EXPECT_FALSE(square.box_projects_inside(Aabb{}));
 }
 
 TEST(CutPolygon, BoxesAcrossOrOnThePlaneAreKept) {
