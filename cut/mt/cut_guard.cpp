@@ -105,30 +105,28 @@ std::vector<FragId> decomposed_fragments(const MtChangeReport& cut) {
 // orientation's sign: + pieces, - killed tets; created side minus replaced.
 std::vector<FragId> fragments_out_of_balance(const Mt& mt, const MtChangeReport& cut) {
   const std::vector<FragId> skip = decomposed_fragments(cut);
-  struct Term {
-    std::int32_t fragment;
-    std::array<std::int32_t, 3> face;  // ascending ids
-    int coefficient;
-    auto key() const { return std::tie(fragment, face); }
-  };
-  std::vector<Term> terms;
+  // (fragment, the face's ascending ids) -> coefficient
+  absl::flat_hash_map<std::array<std::int32_t, 4>, int> sums;
+  sums.reserve(16 * cut.replaced.size());
   const auto add = [&](const engine::Tet& v, engine::FaceMask mask, FragId birth, FragId death, int sign) {
     for (int f = 0; f < 4; ++f) {
       if (mask & (1u << f)) continue;
       const std::array<VertId, 3> outward = engine::face_vertices(v, f);
-      std::array<std::int32_t, 3> face{outward[0].value, outward[1].value, outward[2].value};
+      std::array<std::int32_t, 4> key{0, outward[0].value, outward[1].value, outward[2].value};
       // The orientation's sign: the parity of the sort.
       int parity = 1;
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 2 - i; ++j)
-          if (face[j] > face[j + 1]) {
-            std::swap(face[j], face[j + 1]);
+      for (int i = 1; i < 4; ++i)
+        for (int j = 1; j < 4 - i; ++j)
+          if (key[j] > key[j + 1]) {
+            std::swap(key[j], key[j + 1]);
             parity = -parity;
           }
       for (const auto& [fragment, side] : {std::pair{birth, 1}, std::pair{death, -1}})
         if (fragment.valid() && fragment != mt.root() && fragment != mt.drain() &&
-            !std::binary_search(skip.begin(), skip.end(), fragment))
-          terms.push_back({fragment.value, face, sign * side * parity});
+            !std::binary_search(skip.begin(), skip.end(), fragment)) {
+          key[0] = fragment.value;
+          sums[key] += sign * side * parity;
+        }
     }
   };
   for (const TetReplacement& r : cut.replaced) {
@@ -140,15 +138,11 @@ std::vector<FragId> fragments_out_of_balance(const Mt& mt, const MtChangeReport&
       add(mt.tet(t), mt.boundary_mask(t), r.birth, r.death, 1);
     }
   }
-  std::sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.key() < b.key(); });
   std::vector<FragId> out;
-  for (std::size_t i = 0; i < terms.size();) {
-    std::size_t j = i;
-    int sum = 0;
-    for (; j < terms.size() && terms[j].key() == terms[i].key(); ++j) sum += terms[j].coefficient;
-    if (sum != 0 && (out.empty() || out.back().value != terms[i].fragment)) out.push_back(FragId(terms[i].fragment));
-    i = j;
-  }
+  for (const auto& [key, sum] : sums)
+    if (sum != 0) out.push_back(FragId(key[0]));
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 
