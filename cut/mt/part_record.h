@@ -76,9 +76,11 @@ class PartRecord {
   void set_front(std::optional<engine::Aabb> box) { front_ = std::move(box); }
 
   // Whether the part still commits. It stops for good where its polygon
-  // meets an earlier crack (a turn's junction, an older stroke): there a
-  // commit would leave the crossing half made, which the cutter's guard
-  // refuses, so each frame cuts all the part crosses beyond what it
+  // meets an earlier crack (a turn's junction, an older stroke): there the
+  // cutter's guard checks the fragments the crossing touches whole, and a
+  // commit leaves a fragment whose finer tets it split out of balance until
+  // the front splits the coarser ones (cut_guard.h), so the guard would
+  // refuse it. Each frame then cuts all the part crosses beyond what it
   // committed provisionally, as one transaction, until the part ends.
   bool committing() const { return committing_; }
   void stop_committing() { committing_ = false; }
