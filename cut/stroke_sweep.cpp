@@ -1,12 +1,12 @@
 #include "cut/stroke_sweep.h"
 
-#include "engine/input_error.h"
-
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 
 #include <Eigen/Eigenvalues>
+
+#include "engine/input_error.h"
 
 namespace mtcut::cut {
 namespace {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -88,23 +89,11 @@ int boundary_faces_around(const Mt& mt, const Stars& stars, VertId a, VertId b, 
   return once;
 }
 
-}  // namespace
-
-std::vector<FragId> decomposed_fragments(const MtChangeReport& cut) {
-  std::vector<FragId> out;
-  for (const FragmentSplit& s : cut.fragment_splits) {
-    out.push_back(s.old);
-    out.insert(out.end(), s.parts.begin(), s.parts.end());
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
-// The sum, per fragment, of its changed tets' unmasked faces with their
-// orientation's sign: + pieces, - killed tets; created side minus replaced.
-std::vector<FragId> fragments_out_of_balance(const Mt& mt, const MtChangeReport& cut) {
-  const std::vector<FragId> skip = decomposed_fragments(cut);
+// fragments_out_of_balance, with the cut's decomposed fragments (sorted)
+// given: the sum, per fragment, of its changed tets' unmasked faces with
+// their orientation's sign (+ pieces, - killed tets; created side minus
+// replaced).
+std::vector<FragId> out_of_balance(const Mt& mt, const MtChangeReport& cut, std::span<const FragId> skip) {
   // (fragment, the face's ascending ids) -> coefficient
   absl::flat_hash_map<std::array<std::int32_t, 4>, int> sums;
   sums.reserve(16 * cut.replaced.size());
@@ -144,6 +133,23 @@ std::vector<FragId> fragments_out_of_balance(const Mt& mt, const MtChangeReport&
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
+}
+
+}  // namespace
+
+std::vector<FragId> decomposed_fragments(const MtChangeReport& cut) {
+  std::vector<FragId> out;
+  for (const FragmentSplit& s : cut.fragment_splits) {
+    out.push_back(s.old);
+    out.insert(out.end(), s.parts.begin(), s.parts.end());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<FragId> fragments_out_of_balance(const Mt& mt, const MtChangeReport& cut) {
+  return out_of_balance(mt, cut, decomposed_fragments(cut));
 }
 
 engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
@@ -194,7 +200,7 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   // parts.
   const std::vector<FragId> decomposed = decomposed_fragments(cut);
   if (fragments_valid)
-    for (FragId f : fragments_out_of_balance(mt, cut))
+    for (FragId f : out_of_balance(mt, cut, decomposed))
       report.add("cut: fragment " + std::to_string(f.value) +
                  ": its tets do not fill the region of the tets it replaces");
   for (const TetReplacement& r : cut.replaced) {

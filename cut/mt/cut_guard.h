@@ -12,13 +12,16 @@
 // takes it back (cut_retraction.h): the incision stays as it was, which the
 // paper's relaxed correctness allows, and the MT stays valid.
 //
-// What is checked: every fragment the cut changed still replaces a region
-// by the same region (engine validate_fragment: where the new crack meets
-// an old one the cut may bend differently in a fragment's two
-// tessellations; a random stroke of two legs through a cylinder did so),
-// from what the cut changed in it, and a fragment the cut decomposed where
-// the new crack meets an old one (it holds a piece of an earlier cut that
-// this one split or relabelled) whole, with its parts;
+// What is checked: fragments still replace a region by the same region
+// (engine validate_fragment: where the new crack meets an old one the cut
+// may bend differently in a fragment's two tessellations; a random stroke
+// of two legs through a cylinder did so). When every fragment was valid
+// before the cut, each fragment it changed and did not decompose is checked
+// from what the cut changed in it (fragments_out_of_balance); the
+// fragments where the new crack meets an old one (they hold a piece of an
+// earlier cut that this one split or relabelled) are checked whole, with
+// their parts, when the cut decomposed them or when not every fragment was
+// valid before it (around a part's commits, part_record.h);
 // and at the finest and coarsest resolutions (those validate() checks
 // whole): every piece the cut made is positively oriented (exact),
 // and around every edge of a piece whose two ends cuts made, the faces
@@ -28,8 +31,7 @@
 // other edges and fragments are a single planar cut's through tets no cut
 // had touched, conforming by construction. The edge check costs a point
 // query per edge end, only near old cracks; the fragment check the tets
-// the cut changed, and a pass over the tets of the fragments it decomposed
-// near old cracks.
+// the cut changed, and a pass over the tets of the fragments checked whole.
 
 #include <cstddef>
 #include <vector>

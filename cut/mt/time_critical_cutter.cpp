@@ -256,14 +256,14 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     // split, which a part's commit may do alone.
     pieces_stale_ = pieces_stale_ || (a.split_every_level && a.select != CutSelect::kFront);
     if (a.record && a.select == CutSelect::kComplete) a.record->add(mt, a.tx.changes);
-    if (a.provisional) held_ = std::move(a.tx);
-    active_.reset();
     // A part's crack with a front inside the tissue (a commit that left
     // tets whole, and the front cut behind it) separates nothing but a lobe
     // it went round: its pieces are counted once a commit leaves no front,
     // or at the part's end, not every frame (a pass over the MT each).
     const bool front_open = a.record && (a.select == CutSelect::kFront ||
                                          (a.select == CutSelect::kComplete && a.cut->tets_left_whole() > 0));
+    if (a.provisional) held_ = std::move(a.tx);
+    active_.reset();  // `a` is gone from here
     if (def_.report_pieces && pieces_stale_ && !front_open) {
       result.pieces = find_pieces(mt);
       pieces_stale_ = false;

@@ -163,10 +163,12 @@ TEST(StrokeSweep, APartsPlaneIsFixedOnceItIsWide) {
   const auto [base, tip] = pose(41);
   const Vec3 aside(0.1 * (base - pose(0).first).norm(), 0, 0);
   EXPECT_EQ(stroke.add(base + aside, tip + aside).size(), 1u) << "the part did not end as the blade left its plane";
-  // The new part is not on the old plane.
-  if (const std::optional<CutPolygon> now = stroke.current()) {
-    EXPECT_FALSE(now->same_plane(*first));
-  }
+  // The new part, one pose further, is not on the old plane.
+  const auto [base2, tip2] = pose(42);
+  stroke.add(base2 + aside, tip2 + aside);
+  const std::optional<CutPolygon> now = stroke.current();
+  ASSERT_TRUE(now.has_value());
+  EXPECT_FALSE(now->same_plane(*first));
 }
 
 }  // namespace
