@@ -1,7 +1,6 @@
 #include "cut/cut_polygon.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -226,26 +225,6 @@ bool CutPolygon::box_projects_inside(const engine::Aabb& box, double slack) cons
     }
   }
   return true;
-}
-
-bool CutPolygon::box_projects_outside(const engine::Aabb& box, double slack) const {
-  if (!(box.lo.array() <= box.hi.array()).all()) return false;  // empty
-  const Vec3 lo = box.lo - Vec3::Constant(slack), hi = box.hi + Vec3::Constant(slack);
-  // The outline is convex: a box whose corners all lie beyond one edge's
-  // line (by far more than the rounding of project() and cross2d) projects
-  // outside it.
-  const double rounding = 1e-9 * diameter_ * ((box.center() - origin_).norm() + (hi - lo).norm() + diameter_);
-  std::array<Eigen::Vector2d, 8> q;
-  for (int c = 0; c < 8; ++c)
-    q[c] = project(Vec3((c & 1) ? hi.x() : lo.x(), (c & 2) ? hi.y() : lo.y(), (c & 4) ? hi.z() : lo.z()));
-  const std::size_t n = corners2d_.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d& a = corners2d_[i];
-    const Eigen::Vector2d& b = corners2d_[(i + 1) % n];
-    if (std::all_of(q.begin(), q.end(), [&](const Eigen::Vector2d& x) { return cross2d(b - a, x - a) < -rounding; }))
-      return true;
-  }
-  return false;
 }
 
 int CutPolygon::line_crossing(const Vec3& a, const Vec3& b) const {

@@ -70,10 +70,6 @@ class CutPolygon {
   // projects strictly inside the outline by far more than rounding, so that
   // projects_inside() is +1 for all of them.
   bool box_projects_inside(const engine::Aabb& box, double slack = 0) const;
-  // True only when every point within `slack` (along each axis) of `box`
-  // projects strictly outside the outline by far more than rounding, beyond
-  // one edge's line, so that projects_inside() is -1 for all of them.
-  bool box_projects_outside(const engine::Aabb& box, double slack = 0) const;
 
   // Exact: does the line through a and b pass through the polygon?
   // +1 strictly inside, 0 through its outline, -1 outside (or parallel).

@@ -147,16 +147,18 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
     if (!(record && record->owns(t)) && classifier.may_be_cut(mt.tet(t))) found.push_back(t);
     return true;
   };
-  // Nodes off the plane, or beyond the outline (with the snap's reach and
-  // the displacement: `margin`), hold no tet the cut changes.
-  const auto may_cross = [&](const engine::Aabb& node) {
-    return polygon_.box_may_touch_plane(node, displacement) && !polygon_.box_projects_outside(node, margin);
-  };
-  if (def.search || !def.grown_from) bvh.for_each_overlapping(mt, def.search ? near_front : box, may_cross, add);
+  if (def.search || !def.grown_from) {
+    bvh.for_each_overlapping(
+        mt, def.search ? near_front : box,
+        [&](const engine::Aabb& node) { return polygon_.box_may_touch_plane(node, displacement); }, add);
+  }
   if (def.grown_from) {
     bvh.for_each_overlapping(
         mt, box,
-        [&](const engine::Aabb& node) { return may_cross(node) && !def.grown_from->box_projects_inside(node, margin); },
+        [&](const engine::Aabb& node) {
+          return polygon_.box_may_touch_plane(node, displacement) &&
+                 !def.grown_from->box_projects_inside(node, margin);
+        },
         add);
   }
   sort_unique(found, workspace_->id_bits);  // BVH order must not leak into the result

@@ -94,47 +94,6 @@ TEST(CutPolygon, BoxesThatProjectInsideHoldNoPointOutside) {
   EXPECT_FALSE(square.box_projects_inside(Aabb{}));
 }
 
-TEST(CutPolygon, BoxesThatProjectOutsideHoldNoPointInside) {
-  std::mt19937_64 rng(10);
-  std::uniform_real_distribution<double> coord(-1, 1), size(0, 0.6), slack_of(0, 0.05);
-  std::size_t accepted = 0, refused = 0;
-  for (int trial = 0; trial < 2000; ++trial) {
-    const Vec3 a = Vec3(coord(rng), coord(rng), coord(rng)).normalized();
-    const Vec3 b = a.cross(Vec3(coord(rng), coord(rng), coord(rng))).normalized();
-    const double h = 0.2 + size(rng);
-    // A pentagon: an outline whose edges are not two pairs of parallels.
-    std::vector<Vec3> corners;
-    for (int k = 0; k < 5; ++k) {
-      const double angle = 2 * M_PI * k / 5;
-      corners.push_back(h * (std::cos(angle) * a + std::sin(angle) * b));
-    }
-    const CutPolygon polygon = CutPolygon::from_points(corners);
-    Aabb box;
-    box.extend(Vec3(coord(rng), coord(rng), coord(rng)) * 1.2);
-    box.extend(Vec3(box.lo + Vec3(size(rng), size(rng), size(rng)) * 0.5));
-    const double slack = trial % 2 ? slack_of(rng) : 0.0;
-    bool inside = false;  // a sampled point projects onto or inside the outline
-    for (int i = 0; i < 50 && !inside; ++i) inside = polygon.projects_inside(point_in(box, slack, rng)) >= 0;
-    if (!polygon.box_projects_outside(box, slack)) {
-      ++refused;
-      continue;
-    }
-    ++accepted;
-    ASSERT_FALSE(inside) << trial;
-  }
-  EXPECT_GT(accepted, 200u);
-  EXPECT_GT(refused, 200u);
-  // A box beyond an edge's line is accepted, however tall, beside a corner
-  // too; one that reaches the outline, or whose slack does, or empty, is
-  // refused.
-  const CutPolygon square = CutPolygon::from_points({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
-  EXPECT_TRUE(square.box_projects_outside(Aabb{Vec3(1.1, 0.2, -5), Vec3(1.5, 0.8, 5)}));
-  EXPECT_FALSE(square.box_projects_outside(Aabb{Vec3(1.0, 0.2, -5), Vec3(1.5, 0.8, 5)}));  // onto the outline
-  EXPECT_FALSE(square.box_projects_outside(Aabb{Vec3(1.1, 0.2, 0), Vec3(1.5, 0.8, 0)}, 0.25));  // its slack reaches in
-  EXPECT_FALSE(square.box_projects_outside(Aabb{}));
-  EXPECT_TRUE(square.box_projects_outside(Aabb{Vec3(1.1, 1.1, 0), Vec3(1.5, 1.5, 0)}));
-}
-
 TEST(CutPolygon, BoxesAcrossOrOnThePlaneAreKept) {
   const CutPolygon polygon =
       CutPolygon::from_points({Vec3(0, 0, 0.5), Vec3(1, 0, 0.5), Vec3(1, 1, 0.5), Vec3(0, 1, 0.5)});
