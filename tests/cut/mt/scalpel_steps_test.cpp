@@ -44,16 +44,14 @@ struct StrokeResult {
 struct BladePath {
   std::function<double(double)> path;
   engine::Aabb box;
+  Vec3 size;
   int steps;
   double top, bottom;
   BladePath(const Mt& mt, const StrokeDef& def, std::function<double(double)> p)
-      : path(std::move(p)), box(mt_box(mt)), steps(def.steps) {
-    const Vec3 size = box.hi - box.lo;
-    top = box.hi.z() + 0.05 * size.z();
-    bottom = box.hi.z() - def.depth * size.z();
-  }
-  double x_at(int k) const { return box.lo.x() - 0.02 * (box.hi - box.lo).x() + 1.04 * (box.hi - box.lo).x() * k / steps; }
-  double y_at(double x) const { return box.center().y() + (box.hi - box.lo).y() * path((x - box.lo.x()) / (box.hi - box.lo).x()); }
+      : path(std::move(p)), box(mt_box(mt)), size(box.hi - box.lo), steps(def.steps),
+        top(box.hi.z() + 0.05 * size.z()), bottom(box.hi.z() - def.depth * size.z()) {}
+  double x_at(int k) const { return box.lo.x() - 0.02 * size.x() + 1.04 * size.x() * k / steps; }
+  double y_at(double x) const { return box.center().y() + size.y() * path((x - box.lo.x()) / size.x()); }
   cut::BladePose pose(int k) const {
     const double x = x_at(k);
     return {Vec3(x, y_at(x), top), Vec3(x, y_at(x), bottom), true};
