@@ -20,11 +20,12 @@
 // `plane_tolerance` of its diameter) or would make the union of its sweeps
 // non-convex (the convex hull larger than the swept area by more than
 // `hull_excess`). The next part starts half a sweep back: at the pose midway
-// between the part's last two, then its last pose, then the new one. Two
-// parts sharing only a blade segment would bring the junction back; two that
-// overlap cross each other near the turn, as any two cuts may, and no sweep
-// between them is left uncut. (Each polygon's end is still a partial cut of
-// the tets around the turn, so at coarse resolutions a bridge remains there.)
+// between the part's last two, then its last pose, then the new one, so
+// that no sweep between them is left uncut. What the cutter does at the
+// turn is its own (TimeCriticalCutter::recut): at a gentle turn the next
+// part starts exactly on the ended polygon's last blade edge and continues
+// its crack across it (the overlap behind the edge is dropped); at a sharp
+// one the two parts' cracks cross near the turn, as any two cuts may.
 //
 // The part's plane. A part cut progressively commits the tets its polygon
 // crosses completely, frame by frame (cut/mt/part_record.h), so its plane

@@ -1,5 +1,6 @@
 #include "cut/mt/part_record.h"
 
+#include <algorithm>
 #include <string>
 
 namespace mtcut::cut {
@@ -15,6 +16,18 @@ void PartRecord::add(const Mt& mt, const MtChangeReport& commit) {
     points_.emplace(made.key, made.id);
     made_[made.id.index()] = 1;
   }
+}
+
+std::vector<MadeVertex> PartRecord::committed_points() const {
+  std::vector<MadeVertex> out;
+  out.reserve(points_.size());
+  for (const auto& [key, id] : points_) {
+    MadeVertex& m = out.emplace_back();
+    m.id = id;
+    m.key = key;
+  }
+  std::sort(out.begin(), out.end(), [](const MadeVertex& a, const MadeVertex& b) { return a.id < b.id; });
+  return out;
 }
 
 void PartRecord::renumber(const Mt::Compaction& compaction) {

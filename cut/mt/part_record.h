@@ -67,6 +67,9 @@ class PartRecord {
     return it == points_.end() ? VertId() : it->second;
   }
   std::size_t num_owned() const { return num_owned_; }
+  // The committed points (key and id only), in id order: with the part's
+  // end, what the stroke's crack records (stroke_crack.h).
+  std::vector<MadeVertex> committed_points() const;
 
   // Where the part's crossed tets that no commit owns lie (beside what the
   // polygon's growth adds): the box of the tets the last committed cut left

@@ -5,7 +5,12 @@
 namespace mtcut::cut {
 
 CutContinuation StrokeCrack::continuation(const CutPolygon& next, const Vec3& blade_base, const Vec3& blade_tip) {
-  const int leading = next.edge_between(blade_base, blade_tip);
+  return continuation_with(next, next.edge_between(blade_base, blade_tip));
+}
+
+CutContinuation StrokeCrack::continuation(const CutPolygon& next) { return continuation_with(next, -1); }
+
+CutContinuation StrokeCrack::continuation_with(const CutPolygon& next, const int leading) {
   if (tentative_) junctions_.pop_back();
   tentative_ = false;
   std::optional<StrokeJunction> junction;
@@ -16,7 +21,7 @@ CutContinuation StrokeCrack::continuation(const CutPolygon& next, const Vec3& bl
   return CutContinuation{junctions_, &sides_, front_, leading};
 }
 
-void StrokeCrack::record(const CutPolygon& polygon, const MtChangeReport& report) {
+void StrokeCrack::record(const CutPolygon& polygon, std::span<const MadeVertex> made_vertices) {
   if (tentative_) junctions_.pop_back();
   tentative_ = false;
   std::optional<StrokeJunction> junction;
@@ -29,7 +34,7 @@ void StrokeCrack::record(const CutPolygon& polygon, const MtChangeReport& report
     front_.clear();
   }
   last_ = polygon;
-  for (const MadeVertex& made : report.made_vertices) {
+  for (const MadeVertex& made : made_vertices) {
     if (made.key.kind == PointKind::kFacePoint) {  // where the crack ends, on no side
       front_.push_back({made.id, {VertId(made.key.ids[0]), VertId(made.key.ids[1]), VertId(made.key.ids[2])}});
       continue;
@@ -56,6 +61,28 @@ engine::ValidationReport StrokeCrack::validate() const {
   if (!last_ && (!junctions_.empty() || !sides_.empty() || !front_.empty()))
     report.add("StrokeCrack: no cut recorded, but junctions, sides or a front are held");
   return report;
+}
+
+void StrokeCrack::renumber(const engine::Mt::Compaction& compaction) {
+  const auto map = [&](std::int32_t id) {
+    return id >= 0 && static_cast<std::size_t>(id) < compaction.vertex_map.size() ? compaction.vertex_map[id] : -1;
+  };
+  CrackSides sides;
+  sides.reserve(sides_.size());
+  for (const auto& [id, side] : sides_)
+    if (const std::int32_t to = map(id); to >= 0) sides.emplace(to, side);
+  sides_ = std::move(sides);
+  std::vector<CrackFrontPoint> front;
+  for (const CrackFrontPoint& f : front_) {
+    CrackFrontPoint g{VertId(map(f.id.value)), {}};
+    bool kept = g.id.valid();
+    for (int i = 0; i < 3; ++i) {
+      g.face[i] = VertId(map(f.face[i].value));
+      kept = kept && g.face[i].valid();
+    }
+    if (kept) front.push_back(g);
+  }
+  front_ = std::move(front);
 }
 
 void StrokeCrack::clear() {

@@ -5,6 +5,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <Eigen/Eigenvalues>
 #include <stdexcept>
 #include <string>
 
@@ -22,7 +27,7 @@ void TimeCriticalCutter::submit(const Mt& mt, const CutPolygon& polygon, std::ve
   if (!geometry.empty() && geometry.size() != mt.num_vertices())
     throw std::invalid_argument("TimeCriticalCutter::submit: " + std::to_string(geometry.size()) +
                                 " positions for " + std::to_string(mt.num_vertices()) + " MT vertices");
-  queue_.push_back({polygon, std::move(geometry), false, nullptr, CutSelect::kAll, std::nullopt});
+  queue_.push_back({polygon, std::move(geometry), false, nullptr, CutSelect::kAll, std::nullopt, false, std::nullopt});
 }
 
 void TimeCriticalCutter::submit_provisional(const Mt& mt, const CutPolygon& polygon) {
@@ -59,33 +64,114 @@ const MtChangeReport* TimeCriticalCutter::provisional_changes() const {
 std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
                                                        const std::optional<CutPolygon>& current, bool plane_fixed) {
   std::optional<CutRetraction> out = retract(mt, bvh);
-  for (const CutPolygon& polygon : ended) {
-    if (part_) {  // the part in progress ended (the first polygon is its)
-      if (const std::optional<CutPolygon> on = on_part_plane(*part_, polygon)) part_->last = *on;
-      submit_part(*part_, true);
+  for (std::size_t i = 0; i < ended.size(); ++i) {
+    // The polygon cut for good: the part's (the first ended one, if a part
+    // is in progress), or the ended one going on from the last.
+    std::shared_ptr<PartRecord> record;
+    std::optional<CutPolygon> polygon;
+    if (part_) {
+      if (const std::optional<CutPolygon> on = on_part_plane(*part_, ended[i])) part_->last = *on;
+      polygon = part_->last;
+      record = part_->record;
       part_.reset();
-    } else {
-      submit(mt, polygon);
+    } else if (pivot_) {
+      polygon = pivoted(*pivot_, ended[i].corners());
     }
+    if (!polygon) polygon = ended[i];
+    const CutPolygon* next = i + 1 < ended.size() ? &ended[i + 1] : current ? &*current : nullptr;
+    pivot_ = next ? pivot_between(*polygon, *next) : std::nullopt;
+    submit_ended(*polygon, std::move(record), pivot_);
   }
   if (!current) {
-    if (part_) submit_part(*part_, true);  // the stroke ended with nothing more to cut
+    if (part_) submit_ended(part_->last, part_->record, std::nullopt);  // the stroke ended with nothing more to cut
     part_.reset();
+    pivot_.reset();
     return out;
   }
   if (part_) {
     CutPolygon before = part_->last;
     if (const std::optional<CutPolygon> on = on_part_plane(*part_, *current)) part_->last = *on;
-    submit_part(*part_, false, std::move(before));
+    submit_part(*part_, std::move(before));
     return out;
   }
-  if (plane_fixed) {
-    part_ = Part{std::make_shared<PartRecord>(*current), *current};
-    submit_part(*part_, false);
+  std::optional<CutPolygon> polygon;
+  if (pivot_) polygon = pivoted(*pivot_, current->corners());
+  if (!polygon) polygon = *current;
+  // A part going on from the last one's crack meets it, so it would not
+  // commit (part_record.h): it is cut whole each frame, pivoting about the
+  // edge as the blade goes on, until it ends.
+  if (plane_fixed && !pivot_) {
+    part_ = Part{std::make_shared<PartRecord>(*polygon), *polygon};
+    submit_part(*part_);
   } else {
-    submit_provisional(mt, *current);  // the plane may still turn
+    submit_provisional(mt, *polygon);  // the plane may still turn
+    queue_.back().stroke = true;
   }
   return out;
+}
+
+std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::pivot_between(const CutPolygon& previous,
+                                                                            const CutPolygon& next) {
+  // The edge of `previous` whose ends lie nearest `next` (the blade where
+  // the stroke turned is a corner pair of both, up to their maps to rest
+  // space), if they lie on it to a small fraction of the polygons' size.
+  const std::vector<Vec3>& c = previous.corners();
+  const std::size_t n = c.size();
+  const auto off = [&](const Vec3& x) { return std::hypot(next.signed_distance(x), next.distance_outside(x)); };
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t at = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double cost = std::max(off(c[i]), off(c[(i + 1) % n]));
+    if (cost < best) best = cost, at = i;
+  }
+  if (at == n || !(best <= 0.1 * previous.diameter())) return std::nullopt;
+  Pivot p;
+  p.a = c[at];
+  p.b = c[(at + 1) % n];
+  p.normal = previous.normal();
+  const Vec3 e = (p.b - p.a).normalized();
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& x : c) centre += x;
+  centre /= static_cast<double>(n);
+  p.forward = p.normal.cross(e).normalized();
+  if (p.forward.dot(centre - p.a) > 0) p.forward = -p.forward;
+  // A turn of the stroke's planes up to kMaxContinuedTurn goes on across
+  // the edge; a sharper one starts a new crack.
+  if (std::abs(p.normal.dot(next.normal())) < std::cos(kMaxContinuedTurn * std::numbers::pi / 180))
+    return std::nullopt;
+  return p;
+}
+
+std::optional<CutPolygon> TimeCriticalCutter::pivoted(const Pivot& pivot, const std::vector<Vec3>& corners) {
+  const double length = (pivot.b - pivot.a).norm();
+  const Vec3 e = (pivot.b - pivot.a) / length;
+  // The direction away from the edge that fits the corners ahead of it
+  // best (least squares about the edge's line): the plane is the edge's,
+  // turned about it as the blade goes on.
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  for (const Vec3& x : corners) {
+    const Vec3 w = (x - pivot.a) - e * e.dot(x - pivot.a);
+    if (w.dot(pivot.forward) > 0) spread += w * w.transpose();
+  }
+  Vec3 along = pivot.forward;
+  if (spread.trace() > 0) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(spread);
+    along = eig.eigenvectors().col(2).normalized();
+    if (along.dot(pivot.forward) < 0) along = -along;
+  }
+  // Facing the way the last polygon does (a junction joins polygons whose
+  // normals agree, stroke_junction.h).
+  std::vector<Vec3> plane{pivot.a, pivot.b, pivot.b + length * along, pivot.a + length * along};
+  if ((pivot.b - pivot.a).cross(along).dot(pivot.normal) < 0) std::reverse(plane.begin(), plane.end());
+  std::vector<Vec3> points{pivot.a, pivot.b};
+  for (const Vec3& x : corners)
+    if ((x - pivot.a).dot(along) > 1e-6 * length) points.push_back(x);
+  if (points.size() < 3) return std::nullopt;
+  try {
+    return CutPolygon::on_plane_of(CutPolygon::from_points(plane, "scalpel stroke"), points, "scalpel stroke");
+  } catch (const engine::InputError&) {
+    return std::nullopt;
+  }
 }
 
 std::optional<CutPolygon> TimeCriticalCutter::on_part_plane(const Part& part, const CutPolygon& polygon) const {
@@ -102,16 +188,21 @@ std::optional<CutPolygon> TimeCriticalCutter::on_part_plane(const Part& part, co
   }
 }
 
-void TimeCriticalCutter::submit_part(const Part& part, bool last, std::optional<CutPolygon> grown_from) {
+void TimeCriticalCutter::submit_ended(const CutPolygon& polygon, std::shared_ptr<PartRecord> record,
+                                      const std::optional<Pivot>& next) {
   if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
-  if (last) {
-    queue_.push_back({part.last, {}, false, part.record, CutSelect::kAll, std::nullopt});
-    return;
+  Queued q{polygon, {}, false, std::move(record), CutSelect::kAll, std::nullopt, true, std::nullopt};
+  if (next) q.leading = std::array<Vec3, 2>{next->a, next->b};
+  queue_.push_back(std::move(q));
+}
+
+void TimeCriticalCutter::submit_part(const Part& part, std::optional<CutPolygon> grown_from) {
+  if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
+  if (part.record->committing()) {
+    queue_.push_back({part.last, {}, false, part.record, CutSelect::kComplete, std::move(grown_from), true, std::nullopt});
   }
-  if (part.record->committing())
-    queue_.push_back({part.last, {}, false, part.record, CutSelect::kComplete, std::move(grown_from)});
   queue_.push_back({part.last, {}, true, part.record,
-                    part.record->committing() ? CutSelect::kFront : CutSelect::kAll, std::nullopt});
+                    part.record->committing() ? CutSelect::kFront : CutSelect::kAll, std::nullopt, true, std::nullopt});
   provisional_queued_ = true;
 }
 
@@ -164,6 +255,17 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
     }
   }
   def.search = search ? &*search : nullptr;
+  // A polygon of the stroke continues its crack where it starts on it, and
+  // makes its front exactly on the edge the next one starts on.
+  // (A part's commit and front have no junction: a part that meets an
+  // older crack stops committing, below, and cuts all it crosses as one.)
+  std::optional<CutContinuation> continuation;
+  if (q.stroke && q.select == CutSelect::kAll) {
+    continuation = q.leading ? crack_.continuation(q.polygon, (*q.leading)[0], (*q.leading)[1])
+                             : crack_.continuation(q.polygon);
+    if (!continuation->junctions.empty() || continuation->leading_edge >= 0) def.continuation = &*continuation;
+    if (!q.provisional) a.crack_polygon = q.polygon;
+  }
   a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def, table_, &workspace_);
   if (a.record && a.select == CutSelect::kComplete && a.cut->meets_old_crack()) {
     // Nothing done yet: the part stops committing, and its provisional cut
@@ -256,6 +358,12 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     // split, which a part's commit may do alone.
     pieces_stale_ = pieces_stale_ || (a.split_every_level && a.select != CutSelect::kFront);
     if (a.record && a.select == CutSelect::kComplete) a.record->add(mt, a.tx.changes);
+    if (a.crack_polygon) {  // with the part's commits, everything its crack holds
+      std::vector<MadeVertex> made;
+      if (a.record) made = a.record->committed_points();
+      made.insert(made.end(), a.tx.changes.made_vertices.begin(), a.tx.changes.made_vertices.end());
+      crack_.record(*a.crack_polygon, made);
+    }
     // A part's crack with a front inside the tissue (a commit that left
     // tets whole, and the front cut behind it) separates nothing but a lobe
     // it went round: its pieces are counted once a commit leaves no front,
@@ -288,6 +396,7 @@ std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh
   engine::Mt::Compaction out = mt.compact(std::min(first_cut_vertex_, mt.num_vertices()), keep);
   bvh.renumber(out);
   if (part_) part_->record->renumber(out);
+  crack_.renumber(out);
   if (held_) {
     held_->changes.renumber(out);
     std::size_t kept_before = 0;  // vertices kept below the held cut's first
@@ -321,6 +430,7 @@ engine::ValidationReport TimeCriticalCutter::validate(const Mt& mt) const {
     report.add("cutter: a provisional cut is counted as queued but the queue's last entry is not one");
   if (part_)
     for (auto& p : part_->record->validate(mt).problems) report.add("cutter: " + p);
+  for (auto& p : crack_.validate().problems) report.add("cutter: " + p);
   if (!active_) return report;
   const Active& a = *active_;
   for (auto& p : a.cut->validate(mt).problems) report.add(p);

@@ -37,6 +37,7 @@
 // same on every machine, so runs are reproducible) and/or milliseconds;
 // every call does at least one job when any is pending.
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <limits>
@@ -49,6 +50,7 @@
 #include "cut/mt/mt_cut.h"
 #include "cut/mt/mt_pieces.h"
 #include "cut/mt/part_record.h"
+#include "cut/mt/stroke_crack.h"
 #include "engine/mt/frontier.h"
 
 namespace mtcut::cut {
@@ -107,10 +109,20 @@ class TimeCriticalCutter {
   // takes every tet left. Until then the whole polygon is cut
   // provisionally. A polygon of the part that is not on the record's plane
   // (the World carries each frame's polygon to rest space anew) is
-  // projected onto it, joined with the part's last polygon. Returns the
+  // projected onto it, joined with the part's last polygon.
+  // Turns. Where the stroke turns gently (less than kMaxContinuedTurn), the
+  // next part starts on the ended polygon's edge nearest it (the blade where
+  // it turned) and pivots about it: its polygons hold that edge exactly and
+  // nothing behind it, and its cuts continue the stroke's crack across it
+  // (stroke_crack.h: what the crack made behind is sided by it, its front
+  // on the edge is split), so the two parts' cracks are one surface and the
+  // tissue they go round comes apart. Two parts that each cut the tets at
+  // the turn partially would leave a bridge there. A sharper turn starts a
+  // new crack that crosses the last (StrokeSweep's overlap). Returns the
   // retraction.
   std::optional<CutRetraction> recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
                                      const std::optional<CutPolygon>& current, bool plane_fixed);
+  static constexpr double kMaxContinuedTurn = 45.0;  // degrees between two parts' planes
   // The record of the part in progress (nullptr when none).
   const PartRecord* part_record() const { return part_ ? part_->record.get() : nullptr; }
 
@@ -169,15 +181,36 @@ class TimeCriticalCutter {
     // A part's commit: its polygon of the last frame, which the commit
     // searches only outside of, beside the front (nullopt: search it all).
     std::optional<CutPolygon> grown_from;
+    // A polygon of the stroke in progress: cut as a continuation of the
+    // stroke's crack where it starts on it (stroke_crack.h), and, for good,
+    // recorded in it. `leading`: its outline edge that the next polygon
+    // starts on.
+    bool stroke = false;
+    std::optional<std::array<Vec3, 2>> leading;
+  };
+  // Where a stroke's polygon goes on from the one before it across a gentle
+  // turn: the earlier polygon's outline edge (a, b) that the next starts on,
+  // the earlier one's direction across it (in its plane, away from it) and
+  // its normal.
+  struct Pivot {
+    Vec3 a, b, forward, normal;
   };
   // The part in progress: its record and its last polygon (on its plane).
   struct Part {
     std::shared_ptr<PartRecord> record;
     CutPolygon last;
   };
-  // Queues the part's cut of `polygon` (on its plane): for good, or its
-  // committed tets then its front provisionally.
-  void submit_part(const Part& part, bool last, std::optional<CutPolygon> grown_from = std::nullopt);
+  // Queues a stroke's polygon for good (`record`: its part's, if any).
+  void submit_ended(const CutPolygon& polygon, std::shared_ptr<PartRecord> record, const std::optional<Pivot>& next);
+  // The polygon of `corners` that starts on the pivot's edge: the hull of
+  // the edge and the corners ahead of it, on the plane through the edge
+  // that fits those corners best; nullopt when none lies ahead.
+  static std::optional<CutPolygon> pivoted(const Pivot& pivot, const std::vector<Vec3>& corners);
+  // Queues the part's frame: its committed tets, then its front
+  // provisionally (or all it crosses beyond its commits, provisionally).
+  void submit_part(const Part& part, std::optional<CutPolygon> grown_from = std::nullopt);
+  // The pivot where `next` goes on from `previous` across a gentle turn, if it does.
+  static std::optional<Pivot> pivot_between(const CutPolygon& previous, const CutPolygon& next);
   // `polygon` on the part's plane, as the hull of it and the part's last
   // polygon when it is not of that plane already (nullopt when it has no
   // area there).
@@ -198,6 +231,7 @@ class TimeCriticalCutter {
     std::shared_ptr<PartRecord> record;  // the committed cut of a part joins it when kept
     CutSelect select = CutSelect::kAll;
     bool split_every_level = false;  // split a tet born of the root and replaced by the drain
+    std::optional<CutPolygon> crack_polygon;  // a stroke's cut for good: recorded in its crack when kept
     Transaction tx;
     std::vector<std::size_t> order;   // jobs: visible first, then hidden, ascending within each
     std::size_t visible = 0;          // leading entries of `order` that are visible
@@ -215,6 +249,10 @@ class TimeCriticalCutter {
   std::size_t first_cut_vertex_ = SIZE_MAX;  // the MT's vertex count when the first cut started
   bool provisional_queued_ = false;  // the queue's last entry is provisional
   std::optional<Part> part_;         // the part in progress, once its plane is fixed
+  // The stroke's crack (stroke_crack.h): what its cuts for good made, so that
+  // a part going on from the last across a gentle turn continues it.
+  StrokeCrack crack_;
+  std::optional<Pivot> pivot_;  // the last ended polygon's, when the stroke goes on from it
   // A fragment split or a retraction merged parts since pieces were last
   // counted: the next finished cut counts them (else it reports none).
   bool pieces_stale_ = true;

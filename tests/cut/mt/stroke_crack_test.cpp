@@ -34,7 +34,7 @@ TEST(StrokeCrack, StepsSharingAnEdgeContinueTheCrackAndOthersStartANewOne) {
                       made(11, PointKind::kEdgePoint, 1, {1, 2, -1, -1}),
                       made(12, PointKind::kVertexCopy, -1, {3, -1, -1, -1}),
                       made(13, PointKind::kFacePoint, 0, {4, 5, 6, -1})};
-  crack.record(q0, r0);
+  crack.record(q0, r0.made_vertices);
   EXPECT_TRUE(crack.validate().ok()) << crack.validate().summary();
   EXPECT_EQ(crack.num_sided(), 4u);  // 10, 11, the copy 12 and vertex 3, which kept its id on the + side
   EXPECT_EQ(crack.num_junctions(), 0u);
@@ -53,7 +53,7 @@ TEST(StrokeCrack, StepsSharingAnEdgeContinueTheCrackAndOthersStartANewOne) {
   // It splits the front point 13: no longer front, now sided.
   MtChangeReport r1;
   r1.made_vertices = {made(20, PointKind::kVertexCopy, -1, {13, -1, -1, -1})};
-  crack.record(q1, r1);
+  crack.record(q1, r1.made_vertices);
   EXPECT_TRUE(crack.validate().ok()) << crack.validate().summary();
   EXPECT_EQ(crack.num_junctions(), 1u);
   EXPECT_EQ(crack.num_sided(), 6u);
@@ -63,10 +63,10 @@ TEST(StrokeCrack, StepsSharingAnEdgeContinueTheCrackAndOthersStartANewOne) {
   // one (its sides, its front) is carried over.
   MtChangeReport r2;
   r2.made_vertices = {made(21, PointKind::kFacePoint, 0, {7, 8, 9, -1})};
-  crack.record(q1, r2);
+  crack.record(q1, r2.made_vertices);
   EXPECT_EQ(crack.continuation(q1, Vec3(1, 0, 1), Vec3(1, 0, -1)).front.size(), 1u);
   EXPECT_TRUE(crack.continuation(far, Vec3(6, 0, 1), Vec3(6, 0, -1)).junctions.empty());
-  crack.record(far, MtChangeReport{});
+  crack.record(far, {});
   EXPECT_TRUE(crack.validate().ok()) << crack.validate().summary();
   EXPECT_EQ(crack.num_sided(), 0u);
   EXPECT_EQ(crack.num_junctions(), 0u);
