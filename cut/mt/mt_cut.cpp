@@ -491,9 +491,9 @@ void MtCut::process(Mt& mt, TetBvh& bvh, std::size_t job, MtChangeReport& report
   const auto dag_start = Clock::now();
   report.counts.split_seconds += std::chrono::duration<double>(dag_start - start).count();
 
-  // Step 3: UpdateProcessFragment (not for a part's front: its partial
-  // splits separate nothing, and are taken back).
-  if (f != mt.root() && f != mt.drain() && def_.select != CutSelect::kFront) {
+  // Step 3: UpdateProcessFragment (not for a provisional cut, nor a part's
+  // front: its partial splits separate nothing, and are taken back).
+  if (f != mt.root() && f != mt.drain() && def_.decompose && def_.select != CutSelect::kFront) {
     Decomposition d = decompose_fragment(mt, f, workspace_->decomposition);
     if (d.outcome == DecomposeOutcome::kSplit) {
       ++report.counts.split_fragments;

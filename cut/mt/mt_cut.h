@@ -83,6 +83,12 @@ struct MtCutDef {
   // searched.
   const engine::Aabb* search = nullptr;
   const CutPolygon* grown_from = nullptr;
+  // Step 3 (UpdateProcessFragment): the fragments the cut separates are
+  // decomposed. Off for a provisional cut, which the next frame takes back
+  // (a stroke's part in progress): it separates nothing until the cut for
+  // good, and a decomposition would cost the guard a check of each part
+  // whole (cut_guard.h) every frame.
+  bool decompose = true;
 };
 
 // One cut in progress. Not copyable: it holds its workspace (its own, or one

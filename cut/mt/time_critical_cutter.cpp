@@ -244,6 +244,7 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   MtCutDef def = def_.cut;
   def.record = a.record.get();
   def.select = a.select;
+  def.decompose = !q.provisional;
   // A part's frame searches around its front and where its polygon grew
   // (part_record.h): the tets behind are committed.
   std::optional<engine::Aabb> search;
