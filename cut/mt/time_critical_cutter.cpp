@@ -8,10 +8,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-
-#include <Eigen/Eigenvalues>
 #include <stdexcept>
 #include <string>
+
+#include <Eigen/Eigenvalues>
 
 namespace mtcut::cut {
 namespace {

@@ -76,5 +76,33 @@ TEST(StrokeCrack, StepsSharingAnEdgeContinueTheCrackAndOthersStartANewOne) {
   EXPECT_EQ(crack.num_junctions(), 0u);
 }
 
+// The MT was compacted (the cutter reclaims retracted cuts' slots between a
+// stroke's frames): the crack's sides and front follow the vertices' new
+// ids, and what the compaction dropped leaves the crack.
+TEST(StrokeCrack, RenumberingFollowsTheCompaction) {
+  StrokeCrack crack;
+  const CutPolygon q0 = blade_quad(0, 1), q1 = blade_quad(1, 2);
+  const std::vector<MadeVertex> made0 = {made(10, PointKind::kEdgePoint, -1, {1, 2, -1, -1}),
+                                         made(11, PointKind::kEdgePoint, 1, {1, 2, -1, -1}),
+                                         made(12, PointKind::kFacePoint, 0, {4, 5, 6, -1}),
+                                         made(13, PointKind::kFacePoint, 0, {4, 5, 7, -1})};
+  crack.record(q0, made0);
+  engine::Mt::Compaction compaction;
+  compaction.vertex_map.assign(14, -1);
+  for (std::int32_t v = 0; v < 14; ++v) compaction.vertex_map[v] = v < 7 ? v : v - 3;  // 7, 8, 9 dropped
+  compaction.vertex_map[11] = -1;  // an edge point no live tet uses any more
+  compaction.vertex_map[7] = -1;   // a corner of face point 13's face
+  crack.renumber(compaction);
+  EXPECT_TRUE(crack.validate().ok()) << crack.validate().summary();
+  EXPECT_EQ(crack.num_sided(), 1u);
+  const CutContinuation next = crack.continuation(q1, Vec3(2, 0, 1), Vec3(2, 0, -1));
+  ASSERT_EQ(next.junctions.size(), 1u);
+  EXPECT_EQ(next.sides->at(7), -1);  // 10, now 7
+  EXPECT_FALSE(next.sides->contains(8));
+  ASSERT_EQ(next.front.size(), 1u);  // 12, now 9, on the face (4, 5, 6)
+  EXPECT_EQ(next.front[0].id, VertId(9));
+  EXPECT_EQ(next.front[0].face[2], VertId(6));
+}
+
 }  // namespace
 }  // namespace mtcut::cut
