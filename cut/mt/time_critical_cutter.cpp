@@ -27,13 +27,17 @@ void TimeCriticalCutter::submit(const Mt& mt, const CutPolygon& polygon, std::ve
   if (!geometry.empty() && geometry.size() != mt.num_vertices())
     throw std::invalid_argument("TimeCriticalCutter::submit: " + std::to_string(geometry.size()) +
                                 " positions for " + std::to_string(mt.num_vertices()) + " MT vertices");
-  queue_.push_back({polygon, std::move(geometry), false, nullptr, CutSelect::kAll, std::nullopt, false, std::nullopt});
+  queue_.push_back({.polygon = polygon, .geometry = std::move(geometry)});
 }
 
-void TimeCriticalCutter::submit_provisional(const Mt& mt, const CutPolygon& polygon) {
+void TimeCriticalCutter::submit_provisional(const CutPolygon& polygon) {
+  queue_provisional({.polygon = polygon});
+}
+
+void TimeCriticalCutter::queue_provisional(Queued q) {
   if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
-  submit(mt, polygon);
-  queue_.back().provisional = true;
+  q.provisional = true;
+  queue_.push_back(std::move(q));
   provisional_queued_ = true;
 }
 
@@ -104,14 +108,17 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     part_ = Part{std::make_shared<PartRecord>(*polygon), *polygon};
     submit_part(*part_);
   } else {
-    submit_provisional(mt, *polygon);  // the plane may still turn
-    queue_.back().stroke = true;
+    queue_provisional({.polygon = *polygon, .stroke = true});  // the plane may still turn
   }
   return out;
 }
 
 std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::pivot_between(const CutPolygon& previous,
                                                                             const CutPolygon& next) {
+  // A turn of the stroke's planes up to kMaxContinuedTurn goes on across
+  // an edge; a sharper one starts a new crack.
+  if (std::abs(previous.normal().dot(next.normal())) < std::cos(kMaxContinuedTurn * std::numbers::pi / 180))
+    return std::nullopt;
   // The edge of `previous` whose ends lie nearest `next` (the blade where
   // the stroke turned is a corner pair of both, up to their maps to rest
   // space), if they lie on it to a small fraction of the polygons' size.
@@ -135,10 +142,6 @@ std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::pivot_between(const
   centre /= static_cast<double>(n);
   p.forward = p.normal.cross(e).normalized();
   if (p.forward.dot(centre - p.a) > 0) p.forward = -p.forward;
-  // A turn of the stroke's planes up to kMaxContinuedTurn goes on across
-  // the edge; a sharper one starts a new crack.
-  if (std::abs(p.normal.dot(next.normal())) < std::cos(kMaxContinuedTurn * std::numbers::pi / 180))
-    return std::nullopt;
   return p;
 }
 
@@ -191,7 +194,7 @@ std::optional<CutPolygon> TimeCriticalCutter::on_part_plane(const Part& part, co
 void TimeCriticalCutter::submit_ended(const CutPolygon& polygon, std::shared_ptr<PartRecord> record,
                                       const std::optional<Pivot>& next) {
   if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
-  Queued q{polygon, {}, false, std::move(record), CutSelect::kAll, std::nullopt, true, std::nullopt};
+  Queued q{.polygon = polygon, .record = std::move(record), .stroke = true};
   if (next) q.leading = std::array<Vec3, 2>{next->a, next->b};
   queue_.push_back(std::move(q));
 }
@@ -199,11 +202,16 @@ void TimeCriticalCutter::submit_ended(const CutPolygon& polygon, std::shared_ptr
 void TimeCriticalCutter::submit_part(const Part& part, std::optional<CutPolygon> grown_from) {
   if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
   if (part.record->committing()) {
-    queue_.push_back({part.last, {}, false, part.record, CutSelect::kComplete, std::move(grown_from), true, std::nullopt});
+    queue_.push_back({.polygon = part.last,
+                      .record = part.record,
+                      .select = CutSelect::kComplete,
+                      .grown_from = std::move(grown_from),
+                      .stroke = true});
   }
-  queue_.push_back({part.last, {}, true, part.record,
-                    part.record->committing() ? CutSelect::kFront : CutSelect::kAll, std::nullopt, true, std::nullopt});
-  provisional_queued_ = true;
+  queue_provisional({.polygon = part.last,
+                     .record = part.record,
+                     .select = part.record->committing() ? CutSelect::kFront : CutSelect::kAll,
+                     .stroke = true});
 }
 
 void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {

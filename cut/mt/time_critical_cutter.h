@@ -93,7 +93,7 @@ class TimeCriticalCutter {
   void submit(const Mt& mt, const CutPolygon& polygon, std::vector<Vec3> geometry = {});
   // Queues a provisional cut (in rest space), to be taken back by retract().
   // Throws std::logic_error while one is held.
-  void submit_provisional(const Mt& mt, const CutPolygon& polygon);
+  void submit_provisional(const CutPolygon& polygon);
   // A provisional cut is queued, in progress or done and not retracted.
   bool provisional_held() const { return provisional_queued_ || held_ || (active_ && active_->provisional); }
   // Takes the provisional cut back: a queued one is dropped, a started one
@@ -172,21 +172,22 @@ class TimeCriticalCutter {
   engine::ValidationReport validate(const Mt& mt) const;
 
  private:
+  // Filled by designated initialisers: a member left out keeps its default.
   struct Queued {
     CutPolygon polygon;
-    std::vector<Vec3> geometry;  // empty = rest
+    std::vector<Vec3> geometry{};  // empty = rest
     bool provisional = false;
-    std::shared_ptr<PartRecord> record;  // a part's cut (part_record.h), with `select`
+    std::shared_ptr<PartRecord> record{};  // a part's cut (part_record.h), with `select`
     CutSelect select = CutSelect::kAll;
     // A part's commit: its polygon of the last frame, which the commit
     // searches only outside of, beside the front (nullopt: search it all).
-    std::optional<CutPolygon> grown_from;
+    std::optional<CutPolygon> grown_from{};
     // A polygon of the stroke in progress: cut as a continuation of the
     // stroke's crack where it starts on it (stroke_crack.h), and, for good,
     // recorded in it. `leading`: its outline edge that the next polygon
     // starts on.
     bool stroke = false;
-    std::optional<std::array<Vec3, 2>> leading;
+    std::optional<std::array<Vec3, 2>> leading{};
   };
   // Where a stroke's polygon goes on from the one before it across a gentle
   // turn: the earlier polygon's outline edge (a, b) that the next starts on,
@@ -200,6 +201,8 @@ class TimeCriticalCutter {
     std::shared_ptr<PartRecord> record;
     CutPolygon last;
   };
+  // Queues `q` as the provisional cut (std::logic_error while one is held).
+  void queue_provisional(Queued q);
   // Queues a stroke's polygon for good (`record`: its part's, if any).
   void submit_ended(const CutPolygon& polygon, std::shared_ptr<PartRecord> record, const std::optional<Pivot>& next);
   // The polygon of `corners` that starts on the pivot's edge: the hull of

@@ -167,7 +167,7 @@ TEST(CutRetraction, TheCutterRetractsAProvisionalCutHalfDone) {
       Frontier frontier = random_frontier(mt, rng);
       const Frontier before = frontier;
       cut::TimeCriticalCutter cutter;
-      cutter.submit_provisional(mt, random_polygon(mt_box(mt), rng, true));
+      cutter.submit_provisional(random_polygon(mt_box(mt), rng, true));
       EXPECT_TRUE(cutter.provisional_held());
       EXPECT_THROW(cutter.submit(mt, random_polygon(mt_box(mt), rng, true)), std::logic_error);
       const auto result = cutter.run(mt, bvh, frontier, cut::CutBudget::units(1));
@@ -186,7 +186,7 @@ TEST(CutRetraction, TheCutterRetractsAProvisionalCutHalfDone) {
       EXPECT_EQ(frontier_difference(frontier, before), "") << where;
       EXPECT_TRUE(canonical_mt(mt) == canonical) << where;
       // A queued provisional cut not started is dropped: nothing to undo.
-      cutter.submit_provisional(mt, random_polygon(mt_box(mt), rng, true));
+      cutter.submit_provisional(random_polygon(mt_box(mt), rng, true));
       EXPECT_FALSE(cutter.retract(mt, bvh).has_value()) << where;
       EXPECT_FALSE(cutter.frozen()) << where;
     }
