@@ -18,14 +18,14 @@ namespace {
 using engine::Mt;
 using engine::VertId;
 
-// The live tets of the finest and coarsest resolutions around each vertex
-// of the checked edges: one query per vertex, where a box query per edge and
+// The live tets around each vertex of the checked edges, at every
+// resolution: one query per vertex, where a box query per edge and
 // resolution cost nine in ten of a turning stroke's steps.
 struct Stars {
   std::vector<std::int32_t> vertices;  // sorted
   std::vector<std::uint32_t> first;    // (vertices + 1) offsets into tets
   std::vector<TetId> tets;
-  std::vector<std::uint8_t> levels;    // per entry of tets: 1 finest, 2 coarsest
+  std::vector<std::uint8_t> levels;    // per entry of tets: 1 finest, 2 coarsest, 0 neither
 
   std::size_t index_of(std::int32_t v) const {
     return static_cast<std::size_t>(std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin());
@@ -50,12 +50,9 @@ Stars stars_of(const Mt& mt, const engine::TetBvh& bvh, std::vector<std::int32_t
       if (!mt.alive(t)) return true;
       const engine::Tet& corners = mt.tet(t);
       if (std::find(corners.begin(), corners.end(), v) == corners.end()) return true;
-      const std::uint8_t level = static_cast<std::uint8_t>((mt.birth(t) == mt.root() ? 1 : 0) |
-                                                           (mt.death(t) == mt.drain() ? 2 : 0));
-      if (level != 0) {
-        out.tets.push_back(t);
-        out.levels.push_back(level);
-      }
+      out.tets.push_back(t);
+      out.levels.push_back(
+          static_cast<std::uint8_t>((mt.birth(t) == mt.root() ? 1 : 0) | (mt.death(t) == mt.drain() ? 2 : 0)));
       return true;
     });
   }
@@ -87,6 +84,37 @@ int boundary_faces_around(const Mt& mt, const Stars& stars, VertId a, VertId b, 
     i = j;
   }
   return once;
+}
+
+// A fragment whose tets (those it creates) hold more than two faces of the
+// object's surface around the edge (a, b), or none. Every frontier that
+// holds them (one does: the fragment applied and none after it) has the
+// edge on more than two surface faces, two wedges of tissue joined along
+// it, whichever fragments hold the rest of the tets around it: the
+// resolutions between the finest and the coarsest, as a mixed-resolution
+// frontier shows them.
+FragId pinching_fragment(const Mt& mt, const Stars& stars, VertId a, VertId b,
+                         std::vector<std::pair<std::int32_t, int>>& faces) {
+  faces.clear();  // (fragment, surface faces around the edge in one of its tets)
+  const std::size_t star = stars.index_of(a.value);
+  for (std::uint32_t k = stars.first[star]; k < stars.first[star + 1]; ++k) {
+    const TetId t = stars.tets[k];
+    const engine::Tet& v = mt.tet(t);
+    if (std::find(v.begin(), v.end(), b) == v.end()) continue;
+    int on_surface = 0;  // the faces through a and b are those opposite the other two corners
+    for (int c = 0; c < 4; ++c)
+      if (v[c] != a && v[c] != b && (mt.boundary_mask(t) & (1u << c))) ++on_surface;
+    if (on_surface > 0) faces.emplace_back(mt.birth(t).value, on_surface);
+  }
+  std::sort(faces.begin(), faces.end());
+  for (std::size_t i = 0; i < faces.size();) {
+    int sum = 0;
+    std::size_t j = i;
+    for (; j < faces.size() && faces[j].first == faces[i].first; ++j) sum += faces[j].second;
+    if (sum > 2) return FragId(faces[i].first);
+    i = j;
+  }
+  return FragId();
 }
 
 // fragments_out_of_balance, with the cut's decomposed fragments (sorted)
@@ -214,6 +242,7 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   for (FragId f : fragments)
     for (auto& problem : engine::validate_fragment(mt, f).problems) report.add("cut: " + problem);
   std::vector<std::int32_t> thirds;
+  std::vector<std::pair<std::int32_t, int>> faces;
   std::vector<std::int32_t> ends;
   ends.reserve(2 * edges.size());
   for (const auto& [a, b] : edges) ends.push_back(a);  // the star of a holds every tet of the edge
@@ -225,6 +254,9 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
       if (boundary > 2)
         report.add(std::string("cut: the ") + name + " resolution's boundary is pinched along edge (" +
                    std::to_string(a) + ", " + std::to_string(b) + ")");
+    if (const FragId f = pinching_fragment(mt, stars, VertId(a), VertId(b), faces); f.valid())
+      report.add("cut: fragment " + std::to_string(f.value) + "'s tets pinch the boundary along edge (" +
+                 std::to_string(a) + ", " + std::to_string(b) + ")");
   }
   return report;
 }

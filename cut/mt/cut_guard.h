@@ -29,7 +29,11 @@
 // itself a piece of an earlier cut (where the new crack meets an old one),
 // every such edge; elsewhere, those whose two ends earlier cuts made. The
 // other edges and fragments are a single planar cut's through tets no cut
-// had touched, conforming by construction. The edge check costs a point
+// had touched, conforming by construction. Around those same edges, at
+// every resolution: the tets one fragment creates hold none or two of the
+// surface's faces through the edge, summed (more, and every frontier that
+// shows the fragment, as a mixed-resolution one can, is pinched there).
+// The edge check costs a point
 // query per edge end, only near old cracks; the fragment check the tets
 // the cut changed, and a pass over the tets of the fragments checked whole.
 

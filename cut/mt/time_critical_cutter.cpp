@@ -84,6 +84,7 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     if (!polygon) polygon = ended[i];
     const CutPolygon* next = i + 1 < ended.size() ? &ended[i + 1] : current ? &*current : nullptr;
     pivot_ = next ? pivot_between(*polygon, *next) : std::nullopt;
+    if (pivot_ && (bvh.locate(mt, pivot_->a).valid() || bvh.locate(mt, pivot_->b).valid())) pivot_.reset();
     submit_ended(*polygon, std::move(record), pivot_);
   }
   if (!current) {

@@ -118,8 +118,13 @@ class TimeCriticalCutter {
   // on the edge is split), so the two parts' cracks are one surface and the
   // tissue they go round comes apart. Two parts that each cut the tets at
   // the turn partially would leave a bridge there. A sharper turn starts a
-  // new crack that crosses the last (StrokeSweep's overlap). Returns the
-  // retraction.
+  // new crack that crosses the last (StrokeSweep's overlap), and so does a
+  // turn where an end of the blade lies inside the tissue: there the old
+  // crack's end meets the new sheet at a corner inside the tissue, and a
+  // coarse tet around that corner, its vertices sided by the nearer of two
+  // planes, would hold both sheets on one edge (a pinch at a resolution
+  // between the finest and the coarsest). Such a stroke separates nothing
+  // at the turn. Returns the retraction.
   std::optional<CutRetraction> recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
                                      const std::optional<CutPolygon>& current, bool plane_fixed);
   static constexpr double kMaxContinuedTurn = 45.0;  // degrees between two parts' planes

@@ -199,4 +199,43 @@ inline std::vector<std::tuple<TetKey, std::size_t, std::size_t>> canonical_mt(co
   return out;
 }
 
+// The frontiers that show each fragment a cut touched (one with a live tet
+// on a vertex from `first_cut_vertex` on): the fragment's closure (it and
+// its ancestors), so none after it; each must be a conforming tessellation
+// with a manifold boundary. Mt::validate checks only the finest and the
+// coarsest frontier, and a mixed-resolution frontier (the World's) can show
+// any fragment between them.
+inline engine::ValidationReport validate_cut_fragment_frontiers(const Mt& mt, std::size_t first_cut_vertex) {
+  engine::ValidationReport out;
+  std::vector<char> in(mt.num_fragments());
+  std::vector<FragId> closure, todo;
+  for (std::size_t i = 0; i < mt.num_fragments(); ++i) {
+    const FragId f(i);
+    if (f == mt.drain()) continue;
+    const auto created = mt.created(f);
+    if (std::none_of(created.begin(), created.end(), [&](TetId t) {
+          const engine::Tet& v = mt.tet(t);
+          return mt.alive(t) && std::any_of(v.begin(), v.end(), [&](VertId x) { return x.index() >= first_cut_vertex; });
+        }))
+      continue;
+    std::fill(in.begin(), in.end(), 0);
+    closure.clear();
+    todo.assign(1, f);
+    in[f.index()] = 1;
+    while (!todo.empty()) {
+      const FragId g = todo.back();
+      todo.pop_back();
+      closure.push_back(g);
+      for (FragId p : mt.parents(g))
+        if (!in[p.index()]) {
+          in[p.index()] = 1;
+          todo.push_back(p);
+        }
+    }
+    for (const std::string& problem : engine::validate_frontier(mt, Frontier::from_fragments(mt, closure)).problems)
+      out.add("the frontier of fragment " + std::to_string(i) + " and its ancestors: " + problem);
+  }
+  return out;
+}
+
 }  // namespace mtcut::test

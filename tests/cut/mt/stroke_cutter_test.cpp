@@ -2,7 +2,8 @@
 // step, the stroke's straight parts cut for good as they end and the part
 // in progress cut provisionally, the last step's provisional cut taken back
 // first (cut/mt/cut_retraction.h). After every step the MT, its BVH, the
-// cutter and a frontier that follows the cuts are valid.
+// cutter and a frontier that follows the cuts are valid; after the stroke,
+// so is the frontier that shows each fragment the cuts touched.
 #include "cut/mt/stroke_cutter.h"
 
 #include <gtest/gtest.h>
@@ -29,7 +30,7 @@ struct StrokeOutcome {
 };
 
 // Cuts `path` in `steps` steps (a pose each, then one that disengages),
-// validating after every step.
+// validating after every step, and the fragments' frontiers at the end.
 StrokeOutcome cut_progressively(const Mt& original, const Path& path, int steps, const std::string& where) {
   StrokeOutcome out{original, 0, 0, {}, true};
   Mt& mt = out.mt;
@@ -56,6 +57,11 @@ StrokeOutcome cut_progressively(const Mt& original, const Path& path, int steps,
     }
   }
   EXPECT_FALSE(cutter.provisional_held()) << where;
+  if (out.valid) {
+    const engine::ValidationReport report = validate_cut_fragment_frontiers(mt, original.num_vertices());
+    EXPECT_TRUE(report.ok()) << where << ": " << report.summary();
+    out.valid = report.ok();
+  }
   // The slots the stroke's retracted cuts left are reclaimed once it ends.
   EXPECT_LE(mt.num_dead_tets(), std::max(mt.num_live_tets(), cut::TimeCriticalCutter::kReclaimMin)) << where;
   out.pieces = cut::find_pieces(mt).count;
