@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -120,19 +119,29 @@ std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::pivot_between(const
   // an edge; a sharper one starts a new crack.
   if (std::abs(previous.normal().dot(next.normal())) < std::cos(kMaxContinuedTurn * std::numbers::pi / 180))
     return std::nullopt;
-  // The edge of `previous` whose ends lie nearest `next` (the blade where
-  // the stroke turned is a corner pair of both, up to their maps to rest
-  // space), if they lie on it to a small fraction of the polygons' size.
+  // The edge of `previous` whose ends lie nearest `next` among its long
+  // ones, if they lie on it to a small fraction of the polygons' size: the
+  // blade where the stroke turned is a corner pair of both, up to their
+  // maps to rest space. A short edge of the hull beside it (where the
+  // blade's last poses, projected on the part's plane, make a corner) can
+  // lie as near, and pivoting about it turns the part's plane off the
+  // blade; so the edges within reach that are under half the longest of
+  // them are passed over.
   const std::vector<Vec3>& c = previous.corners();
   const std::size_t n = c.size();
   const auto off = [&](const Vec3& x) { return std::hypot(next.signed_distance(x), next.distance_outside(x)); };
-  double best = std::numeric_limits<double>::infinity();
-  std::size_t at = n;
+  const double tolerance = 0.1 * previous.diameter();
+  std::vector<double> cost(n);
+  double longest = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double cost = std::max(off(c[i]), off(c[(i + 1) % n]));
-    if (cost < best) best = cost, at = i;
+    cost[i] = std::max(off(c[i]), off(c[(i + 1) % n]));
+    if (cost[i] <= tolerance) longest = std::max(longest, (c[(i + 1) % n] - c[i]).norm());
   }
-  if (at == n || !(best <= 0.1 * previous.diameter())) return std::nullopt;
+  std::size_t at = n;
+  for (std::size_t i = 0; i < n; ++i)
+    if (cost[i] <= tolerance && (c[(i + 1) % n] - c[i]).norm() >= 0.5 * longest && (at == n || cost[i] < cost[at]))
+      at = i;
+  if (at == n) return std::nullopt;
   Pivot p;
   p.a = c[at];
   p.b = c[(at + 1) % n];

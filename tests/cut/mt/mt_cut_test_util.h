@@ -212,10 +212,10 @@ inline engine::ValidationReport validate_cut_fragment_frontiers(const Mt& mt, st
   for (std::size_t i = 0; i < mt.num_fragments(); ++i) {
     const FragId f(i);
     if (f == mt.drain()) continue;
+    const auto made = [&](VertId x) { return x.index() >= first_cut_vertex; };
     const auto created = mt.created(f);
     if (std::none_of(created.begin(), created.end(), [&](TetId t) {
-          const engine::Tet& v = mt.tet(t);
-          return mt.alive(t) && std::any_of(v.begin(), v.end(), [&](VertId x) { return x.index() >= first_cut_vertex; });
+          return mt.alive(t) && std::any_of(mt.tet(t).begin(), mt.tet(t).end(), made);
         }))
       continue;
     std::fill(in.begin(), in.end(), 0);
