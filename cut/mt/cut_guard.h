@@ -33,9 +33,9 @@
 // every resolution: the tets one fragment creates hold none or two of the
 // surface's faces through the edge, summed (more, and every frontier that
 // shows the fragment, as a mixed-resolution one can, is pinched there).
-// The edge check costs a point
-// query per edge end, only near old cracks; the fragment check the tets
-// the cut changed, and a pass over the tets of the fragments checked whole.
+// The edge check costs a point query per edge end, only near old cracks;
+// the fragment check the tets the cut changed, and a pass over the tets of
+// the fragments checked whole.
 
 #include <cstddef>
 #include <vector>
