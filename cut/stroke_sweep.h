@@ -25,7 +25,8 @@
 // turn is its own (TimeCriticalCutter::recut): at a gentle turn the next
 // part starts exactly on the ended polygon's last blade edge and continues
 // its crack across it (the overlap behind the edge is dropped); at a sharp
-// one the two parts' cracks cross near the turn, as any two cuts may.
+// one the two parts' cracks cross near the turn, each taken a little past
+// the other.
 //
 // The part's plane. A part cut progressively commits the tets its polygon
 // crosses completely, frame by frame (cut/mt/part_record.h), so its plane

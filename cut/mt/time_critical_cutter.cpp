@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -16,6 +17,50 @@ namespace mtcut::cut {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The unit direction in `polygon`'s plane across the line a-b, away from
+// the polygon: from its corner farthest from the line (a part that starts
+// half a sweep behind its turn's edge lies mostly ahead of it).
+Vec3 outward(const CutPolygon& polygon, const Vec3& a, const Vec3& b) {
+  const Vec3 e = (b - a).normalized();
+  const Vec3 across = polygon.normal().cross(e).normalized();
+  double farthest = 0;
+  for (const Vec3& x : polygon.corners())
+    if (std::abs((x - a).dot(across)) > std::abs(farthest)) farthest = (x - a).dot(across);
+  return farthest > 0 ? Vec3(-across) : across;
+}
+
+// How far past the line a-b, along `out`, the tets reach that hold a point
+// of the segment, at every resolution of the MT (0 when the segment misses
+// it): a crack's outline that far past the line leaves every such tet
+// crossed completely. The points are spaced along the segment's part in the
+// MT's box.
+double tets_reach_past(const Mt& mt, const engine::TetBvh& bvh, Vec3 a, Vec3 b, const Vec3& out) {
+  const engine::Aabb box = bvh.bounds();
+  double t0 = 0, t1 = 1;  // the segment clipped to the box (slabs)
+  for (int k = 0; k < 3 && t0 <= t1; ++k) {
+    const double d = b[k] - a[k];
+    if (d == 0) {
+      if (a[k] < box.lo[k] || a[k] > box.hi[k]) t1 = -1;
+      continue;
+    }
+    const double u = (box.lo[k] - a[k]) / d, v = (box.hi[k] - a[k]) / d;
+    t0 = std::max(t0, std::min(u, v));
+    t1 = std::min(t1, std::max(u, v));
+  }
+  if (t0 > t1) return 0;
+  constexpr int kSamples = 128;
+  double reach = 0;
+  for (int k = 0; k <= kSamples; ++k) {
+    const double t = t0 + (t1 - t0) * k / kSamples;
+    const Vec3 p = a + t * (b - a);
+    bvh.for_each_containing(mt, p, [&](engine::TetId tet) {
+      for (engine::VertId v : mt.tet(tet)) reach = std::max(reach, (mt.position(v) - p).dot(out));
+      return true;
+    });
+  }
+  return reach;
+}
 
 }  // namespace
 
@@ -72,34 +117,49 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     // is in progress), or the ended one going on from the last.
     std::shared_ptr<PartRecord> record;
     std::optional<CutPolygon> polygon;
+    const CutPolygon here = crossing_ ? past(ended[i], *crossing_) : ended[i];
     if (part_) {
-      if (const std::optional<CutPolygon> on = on_part_plane(*part_, ended[i])) part_->last = *on;
+      if (const std::optional<CutPolygon> on = on_part_plane(*part_, here)) part_->last = *on;
       polygon = part_->last;
       record = part_->record;
       part_.reset();
     } else if (pivot_) {
       polygon = pivoted(*pivot_, ended[i].corners());
+    } else {
+      polygon = here;
     }
     if (!polygon) polygon = ended[i];
     const CutPolygon* next = i + 1 < ended.size() ? &ended[i + 1] : current ? &*current : nullptr;
     pivot_ = next ? pivot_between(*polygon, *next) : std::nullopt;
     if (pivot_ && (bvh.locate(mt, pivot_->a).valid() || bvh.locate(mt, pivot_->b).valid())) pivot_.reset();
+    crossing_.reset();
+    if (next && !pivot_) {
+      if (const std::optional<Pivot> turn = turn_edge(*polygon, *next)) {
+        const Vec3 back = outward(*next, turn->a, turn->b);
+        crossing_ = Crossing{turn->a, turn->b, kCrossingReach * tets_reach_past(mt, bvh, turn->a, turn->b, back)};
+        polygon = past(*polygon, Crossing{turn->a, turn->b,
+                                          kCrossingReach * tets_reach_past(mt, bvh, turn->a, turn->b, turn->forward)});
+      }
+    }
     submit_ended(*polygon, std::move(record), pivot_);
   }
   if (!current) {
     if (part_) submit_ended(part_->last, part_->record, std::nullopt);  // the stroke ended with nothing more to cut
     part_.reset();
     pivot_.reset();
+    crossing_.reset();
     return out;
   }
   if (part_) {
     CutPolygon before = part_->last;
-    if (const std::optional<CutPolygon> on = on_part_plane(*part_, *current)) part_->last = *on;
+    const CutPolygon here = crossing_ ? past(*current, *crossing_) : *current;
+    if (const std::optional<CutPolygon> on = on_part_plane(*part_, here)) part_->last = *on;
     submit_part(*part_, std::move(before));
     return out;
   }
   std::optional<CutPolygon> polygon;
   if (pivot_) polygon = pivoted(*pivot_, current->corners());
+  if (!polygon && crossing_) polygon = past(*current, *crossing_);
   if (!polygon) polygon = *current;
   // A part going on from the last one's crack meets it, so it would not
   // commit (part_record.h): it is cut whole each frame, pivoting about the
@@ -116,9 +176,21 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
 std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::pivot_between(const CutPolygon& previous,
                                                                             const CutPolygon& next) {
   // A turn of the stroke's planes up to kMaxContinuedTurn goes on across
-  // an edge; a sharper one starts a new crack.
+  // an edge; a sharper one starts a new crack, and so does a stroke that
+  // turns back on itself (a V: its planes are nearly parallel, and nothing
+  // of `next` lies ahead of the edge, where `previous` was going).
   if (std::abs(previous.normal().dot(next.normal())) < std::cos(kMaxContinuedTurn * std::numbers::pi / 180))
     return std::nullopt;
+  const std::optional<Pivot> turn = turn_edge(previous, next);
+  if (!turn) return std::nullopt;
+  double ahead = -std::numeric_limits<double>::infinity();
+  for (const Vec3& x : next.corners()) ahead = std::max(ahead, (x - turn->a).dot(turn->forward));
+  if (ahead <= 0) return std::nullopt;
+  return turn;
+}
+
+std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::turn_edge(const CutPolygon& previous,
+                                                                        const CutPolygon& next) {
   // The edge of `previous` whose ends lie nearest `next` among its long
   // ones, if they lie on it to a small fraction of the polygons' size: the
   // blade where the stroke turned is a corner pair of both, up to their
@@ -146,12 +218,7 @@ std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::pivot_between(const
   p.a = c[at];
   p.b = c[(at + 1) % n];
   p.normal = previous.normal();
-  const Vec3 e = (p.b - p.a).normalized();
-  Vec3 centre = Vec3::Zero();
-  for (const Vec3& x : c) centre += x;
-  centre /= static_cast<double>(n);
-  p.forward = p.normal.cross(e).normalized();
-  if (p.forward.dot(centre - p.a) > 0) p.forward = -p.forward;
+  p.forward = outward(previous, p.a, p.b);
   return p;
 }
 
@@ -184,6 +251,19 @@ std::optional<CutPolygon> TimeCriticalCutter::pivoted(const Pivot& pivot, const 
     return CutPolygon::on_plane_of(CutPolygon::from_points(plane, "scalpel stroke"), points, "scalpel stroke");
   } catch (const engine::InputError&) {
     return std::nullopt;
+  }
+}
+
+CutPolygon TimeCriticalCutter::past(const CutPolygon& polygon, const Crossing& crossing) {
+  if (crossing.reach <= 0) return polygon;
+  const Vec3 out = outward(polygon, crossing.a, crossing.b);
+  std::vector<Vec3> points = polygon.corners();
+  points.push_back(crossing.a + crossing.reach * out);
+  points.push_back(crossing.b + crossing.reach * out);
+  try {
+    return CutPolygon::on_plane_of(polygon, points, "scalpel stroke");
+  } catch (const engine::InputError&) {
+    return polygon;
   }
 }
 

@@ -260,5 +260,54 @@ TEST_P(StrokeCutterRandom, StrokesKeepTheMtValid) {
 
 INSTANTIATE_TEST_SUITE_P(Shards, StrokeCutterRandom, ::testing::Range(0, kShards));
 
+// Random corner cuts on the convex builtin shapes: two legs through the
+// whole depth, from outside to a point inside and out again, turning
+// sharply there (60 to 150 degrees, either way), in 20 to 80 steps and all
+// in one step: valid after every step, no cut refused, and the corner comes
+// off (two pieces), as the two cracks cross where the stroke turned, in
+// all but at most one stroke in 20 (a bridge of tets both cracks cut
+// partially, or a stub that cuts off a third piece: time_critical_cutter.h,
+// kCrossingReach). MTCUT_STROKES / 5 strokes (40 by default).
+TEST(StrokeCutter, SharpTurnsThroughTheWholeDepthCutOffTheCorner) {
+  const std::vector<std::string> specs = {"builtin:ellipsoid", "builtin:box", "builtin:cylinder"};
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int strokes = std::max(1, stroke_count() / 5);
+  int missed = 0;  // strokes that did not end in two pieces, cut progressively or in one step
+  for (int i = 0; i < strokes; ++i) {
+    std::seed_seq seed{2027u, static_cast<unsigned>(i)};
+    std::mt19937_64 rng(seed);
+    const std::string spec = specs[static_cast<std::size_t>(i) % specs.size()];
+    const Mt& original = property_mt(spec);
+    const engine::Aabb box = mt_box(original);
+    const Vec3 size = box.hi - box.lo;
+    // The corner within the middle half of the box (inside the shape's
+    // outline seen from above), the legs long enough to start and end outside.
+    const Vec3 corner = box.center() + Vec3((u(rng) - 0.5) * 0.5 * size.x(), (u(rng) - 0.5) * 0.5 * size.y(), 0);
+    const double heading = 2 * M_PI * u(rng);
+    const double turn = (u(rng) < 0.5 ? -1 : 1) * (60.0 + 90.0 * u(rng)) * M_PI / 180;
+    const double reach = 1.5 * size.norm();
+    const Vec3 start = corner - reach * Vec3(std::cos(heading), std::sin(heading), 0);
+    const Vec3 end = corner + reach * Vec3(std::cos(heading + turn), std::sin(heading + turn), 0);
+    const double top = box.hi.z() + 0.05 * size.z(), bottom = box.lo.z() - 0.05 * size.z();
+    const Path path = [start, corner, end, top, bottom](double s) {
+      const Vec3 q = s < 0.5 ? start + 2 * s * (corner - start) : corner + (2 * s - 1) * (end - corner);
+      return cut::BladePose{Vec3(q.x(), q.y(), top), Vec3(q.x(), q.y(), bottom), true};
+    };
+    const int steps = 20 + static_cast<int>(u(rng) * 60);
+    const std::string where = "corner cut " + std::to_string(i) + " on " + spec + ": turn " +
+                              std::to_string(turn * 180 / M_PI) + " degrees, " + std::to_string(steps) + " steps";
+    const StrokeOutcome r = cut_progressively(original, path, steps, where);
+    if (!r.valid) continue;
+    EXPECT_EQ(r.refused, 0u) << where;
+    const std::size_t at_once = cut::find_pieces(cut_at_once(original, path, steps)).count;
+    if (r.pieces != 2 || at_once != 2) {
+      ++missed;
+      std::printf("[ report   ] %s: %zu pieces, %zu in one step\n", where.c_str(), r.pieces, at_once);
+    }
+  }
+  std::printf("[ report   ] %d random corner cuts, %d not in two pieces\n", strokes, missed);
+  EXPECT_LE(missed * 20, std::max(strokes, 20)) << missed << " corner cuts did not cut the corner off";
+}
+
 }  // namespace
 }  // namespace mtcut::test
