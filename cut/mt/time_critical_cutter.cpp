@@ -176,17 +176,10 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
 std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::pivot_between(const CutPolygon& previous,
                                                                             const CutPolygon& next) {
   // A turn of the stroke's planes up to kMaxContinuedTurn goes on across
-  // an edge; a sharper one starts a new crack, and so does a stroke that
-  // turns back on itself (a V: its planes are nearly parallel, and nothing
-  // of `next` lies ahead of the edge, where `previous` was going).
+  // an edge; a sharper one starts a new crack.
   if (std::abs(previous.normal().dot(next.normal())) < std::cos(kMaxContinuedTurn * std::numbers::pi / 180))
     return std::nullopt;
-  const std::optional<Pivot> turn = turn_edge(previous, next);
-  if (!turn) return std::nullopt;
-  double ahead = -std::numeric_limits<double>::infinity();
-  for (const Vec3& x : next.corners()) ahead = std::max(ahead, (x - turn->a).dot(turn->forward));
-  if (ahead <= 0) return std::nullopt;
-  return turn;
+  return turn_edge(previous, next);
 }
 
 std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::turn_edge(const CutPolygon& previous,

@@ -118,8 +118,7 @@ class TimeCriticalCutter {
   // on the edge is split), so the two parts' cracks are one surface and the
   // tissue they go round comes apart. Two parts that each cut the tets at
   // the turn partially would leave a bridge there. A sharper turn starts a
-  // new crack (so does a V, which turns back on itself though its planes
-  // are nearly parallel), and so does a turn where an end of the blade lies
+  // new crack, and so does a turn where an end of the blade lies
   // inside the tissue: there the old crack's end would meet the new sheet
   // at a corner inside the tissue, and a coarse tet around that corner, its
   // vertices sided by the nearer of two planes, would hold both sheets on
@@ -134,9 +133,8 @@ class TimeCriticalCutter {
   static constexpr double kMaxContinuedTurn = 45.0;  // degrees between two parts' planes
   // Of the reach of the tets at a sharp turn (above). Less leaves bridges of
   // tets that both cracks cut partially; more makes stubs that cut off a
-  // piece against the object's side or the other stub. In 200 random
-  // corner cuts on 1,500-tet MTs, 2 left the corner on: at 0.3, 6; at 0.5,
-  // 5; at 0.6, 9 (docs/progressive_cutting.md).
+  // piece against the object's side or the other stub: in random corner
+  // cuts, 0.3, 0.5 and 0.6 left more corners on (docs/progressive_cutting.md).
   static constexpr double kCrossingReach = 0.4;
   // The record of the part in progress (nullptr when none).
   const PartRecord* part_record() const { return part_ ? part_->record.get() : nullptr; }
