@@ -130,12 +130,7 @@ void follow_retraction(const engine::Mt& mt, engine::Frontier& frontier, const C
   }
   std::vector<TetId> tets(retraction.revived);
   tets.insert(tets.end(), retraction.killed.begin(), retraction.killed.end());
-  std::vector<FragId> births;
-  births.reserve(retraction.revived.size());
-  for (TetId t : retraction.revived) births.push_back(mt.birth(t));
-  std::sort(births.begin(), births.end());
-  births.erase(std::unique(births.begin(), births.end()), births.end());
-  frontier.follow_edit(mt, {}, tets, births);
+  frontier.follow_edit(mt, {}, tets, {});
 }
 
 }  // namespace mtcut::cut

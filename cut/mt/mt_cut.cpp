@@ -147,12 +147,15 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
     if (!(record && record->owns(t)) && classifier.may_be_cut(mt.tet(t))) found.push_back(t);
     return true;
   };
-  if (def.search || !def.grown_from) {
+  if (def.candidates) {
+    for (TetId t : *def.candidates)
+      if (mt.alive(t) && engine::tet_box_overlaps(mt, t, def.search ? near_front : box)) add(t);
+  } else if (def.search || !def.grown_from) {
     bvh.for_each_overlapping(
         mt, def.search ? near_front : box,
         [&](const engine::Aabb& node) { return polygon_.box_may_touch_plane(node, displacement); }, add);
   }
-  if (def.grown_from) {
+  if (def.grown_from && !def.candidates) {
     bvh.for_each_overlapping(
         mt, box,
         [&](const engine::Aabb& node) {
@@ -166,6 +169,7 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   for (TetId t : found) classifier.add_candidate(mt.tet(t));
   add_tets_around_on_vertices(mt, bvh, classifier, record, found);
   classifier.finalize();
+  candidates_ = found;
 
   if (table.scheme() != def_.scheme) throw std::invalid_argument("MtCut: the split table is for another scheme");
   // Which tets change, and their pieces over vertex ids (new points are

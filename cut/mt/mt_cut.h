@@ -83,6 +83,12 @@ struct MtCutDef {
   // searched.
   const engine::Aabb* search = nullptr;
   const CutPolygon* grown_from = nullptr;
+  // The tets the search takes instead of walking the index: those the last
+  // cut of the same polygon found (candidates()), when nothing but that cut
+  // has edited the MT since and `search` lies in what it searched (a part's
+  // front after its commit). The dead are passed over, the others tested as
+  // the walk tests them. Read while the cut is searched.
+  const std::vector<TetId>* candidates = nullptr;
   // Step 3 (UpdateProcessFragment): the fragments the cut separates are
   // decomposed. Off for a provisional cut, which the next frame takes back
   // (a stroke's part in progress): it separates nothing until the cut for
@@ -125,6 +131,9 @@ class MtCut {
   bool meets_old_crack() const { return meets_old_crack_; }
   // The box of the tets left whole (in the cut's geometry; empty when none).
   const engine::Aabb& left_whole_box() const { return left_whole_box_; }
+  // Every tet the search found that the polygon may cut, ascending
+  // (MtCutDef::candidates of a later cut).
+  const std::vector<TetId>& candidates() const { return candidates_; }
   std::size_t points_to_make() const { return points_.size(); }
   // Time of step 1.
   double find_seconds() const { return find_seconds_; }
@@ -200,6 +209,7 @@ class MtCut {
   std::size_t new_tets_ = 0;        // pieces of split tets
   std::size_t left_whole_ = 0;      // found to change, not of `select`
   engine::Aabb left_whole_box_;
+  std::vector<TetId> candidates_;
   bool meets_old_crack_ = false;
   std::vector<FragId> jobs_;
   std::vector<std::uint32_t> job_first_;  // (jobs + 1) offsets into job_tets_

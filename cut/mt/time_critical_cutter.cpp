@@ -9,6 +9,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 
@@ -116,16 +117,18 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     // is in progress), or the ended one going on from the last.
     std::shared_ptr<PartRecord> record;
     std::optional<CutPolygon> polygon;
-    const CutPolygon here = crossing_ ? past(ended[i], *crossing_) : ended[i];
+    // The ended polygon starts behind the last turn's edge (crossing_ and
+    // pivot_ are exclusive).
+    const auto here = [&] { return crossing_ ? past(ended[i], *crossing_) : ended[i]; };
     if (part_) {
-      if (const std::optional<CutPolygon> on = on_part_plane(*part_, here)) part_->last = *on;
+      if (const std::optional<CutPolygon> on = on_part_plane(*part_, here())) part_->last = *on;
       polygon = part_->last;
       record = part_->record;
       part_.reset();
     } else if (pivot_) {
       polygon = pivoted(*pivot_, ended[i].corners());
     } else {
-      polygon = here;
+      polygon = here();
     }
     if (!polygon) polygon = ended[i];
     const CutPolygon* next = i + 1 < ended.size() ? &ended[i + 1] : current ? &*current : nullptr;
@@ -346,6 +349,12 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
     }
   }
   def.search = search ? &*search : nullptr;
+  // The front right behind its kept commit takes the tets the commit found:
+  // its box is the one of the tets the commit left whole.
+  const std::optional<Searched> searched = std::exchange(searched_, std::nullopt);
+  if (searched && a.select == CutSelect::kFront && search && searched->record == a.record.get() &&
+      searched->revision == mt.revision())
+    def.candidates = &searched->tets;
   // A polygon of the stroke continues its crack where it starts on it, and
   // makes its front exactly on the edge the next one starts on.
   // (A part's commit and front have no junction: a part that meets an
@@ -448,7 +457,10 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     // a tet of every resolution (born of the root, replaced by the drain) is
     // split, which a part's commit may do alone.
     pieces_stale_ = pieces_stale_ || (a.split_every_level && a.select != CutSelect::kFront);
-    if (a.record && a.select == CutSelect::kComplete) a.record->add(mt, a.tx.changes);
+    if (a.record && a.select == CutSelect::kComplete) {
+      a.record->add(mt, a.tx.changes);
+      searched_ = Searched{a.record.get(), mt.revision(), a.cut->candidates()};
+    }
     if (a.crack_polygon) {  // with the part's commits, everything its crack holds
       std::vector<MadeVertex> made;
       if (a.record) made = a.record->committed_points();
@@ -488,6 +500,7 @@ std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh
   bvh.renumber(out);
   if (part_) part_->record->renumber(out);
   crack_.renumber(out);
+  searched_.reset();
   if (held_) {
     held_->changes.renumber(out);
     std::size_t kept_before = 0;  // vertices kept below the held cut's first
@@ -560,15 +573,9 @@ Frontier map_frontier(const Mt& mt, const Frontier& frontier, std::span<const Fr
 
 void follow_cut(const Mt& mt, Frontier& frontier, const MtChangeReport& changes) {
   if (changes.empty()) return;
-  // mark[f]: 1 f joins S here, 2 f is already listed in `births`.
+  // mark[f]: 1 f joins S here, 2 f is already listed in `regrouped`.
   std::vector<std::uint8_t> mark(mt.num_fragments(), 0);
-  std::vector<FragId> joined, births;
-  const auto add_birth = [&](FragId f) {
-    if (f.valid() && !(mark[f.index()] & 2)) {
-      mark[f.index()] |= 2;
-      births.push_back(f);
-    }
-  };
+  std::vector<FragId> joined, regrouped;
   for (const FragmentSplit& s : changes.fragment_splits) {  // in order: a part may split again
     const bool in_s = frontier.contains(s.old) || (mark[s.old.index()] & 1);
     for (FragId p : s.parts) {
@@ -576,17 +583,17 @@ void follow_cut(const Mt& mt, Frontier& frontier, const MtChangeReport& changes)
         mark[p.index()] |= 1;
         joined.push_back(p);
       }
-      add_birth(p);
+      if (p.valid() && !(mark[p.index()] & 2)) {
+        mark[p.index()] |= 2;
+        regrouped.push_back(p);
+      }
     }
   }
   std::vector<TetId> tets;
   tets.reserve(changes.replaced.size() + changes.made_tets.size());
   for (const TetReplacement& r : changes.replaced) tets.push_back(r.old);
-  for (TetId t : changes.made_tets) {
-    tets.push_back(t);
-    if (mt.alive(t)) add_birth(mt.birth(t));
-  }
-  frontier.follow_edit(mt, joined, tets, births);
+  tets.insert(tets.end(), changes.made_tets.begin(), changes.made_tets.end());
+  frontier.follow_edit(mt, joined, tets, regrouped);
 }
 
 }  // namespace mtcut::cut

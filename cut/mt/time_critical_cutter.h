@@ -123,11 +123,12 @@ class TimeCriticalCutter {
   // at a corner inside the tissue, and a coarse tet around that corner, its
   // vertices sided by the nearer of two planes, would hold both sheets on
   // one edge (a pinch at a resolution between the finest and the
-  // coarsest). The two cracks cross: the ended polygon goes on past the turn's edge, and the
-  // next part's polygons start behind it, each by kCrossingReach of how far
-  // past the edge the tets reach that it passes through (every resolution),
-  // so the tissue a sharp turn goes round comes apart too, with a short
-  // stub of each crack beyond the other. Returns the retraction.
+  // coarsest). The two cracks cross: the ended polygon goes on past the
+  // turn's edge, and the next part's polygons start behind it, each by
+  // kCrossingReach of how far past the edge the tets reach that it passes
+  // through (every resolution), so the tissue a sharp turn goes round comes
+  // apart too, with a short stub of each crack beyond the other. Returns the
+  // retraction.
   std::optional<CutRetraction> recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
                                      const std::optional<CutPolygon>& current, bool plane_fixed);
   static constexpr double kMaxContinuedTurn = 45.0;  // degrees between two parts' planes
@@ -277,6 +278,15 @@ class TimeCriticalCutter {
   std::size_t first_cut_vertex_ = SIZE_MAX;  // the MT's vertex count when the first cut started
   bool provisional_queued_ = false;  // the queue's last entry is provisional
   std::optional<Part> part_;         // the part in progress, once its plane is fixed
+  // What a part's commit searched, for the front queued behind it (which
+  // searches within the commit's front box): kept only until the next cut
+  // starts, and used only if the MT is still at `revision`.
+  struct Searched {
+    const PartRecord* record = nullptr;
+    std::uint64_t revision = 0;
+    std::vector<TetId> tets;
+  };
+  std::optional<Searched> searched_;
   // The stroke's crack (stroke_crack.h): what its cuts for good made, so that
   // a part going on from the last across a gentle turn continues it.
   StrokeCrack crack_;

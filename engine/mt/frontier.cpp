@@ -54,10 +54,11 @@ void Frontier::sync(const Mt& mt) {
   verts_.grow(mt.num_vertices());
   vert_uses_.resize(std::max(vert_uses_.size(), mt.num_vertices()), 0);
   frag_uses_.resize(std::max(frag_uses_.size(), mt.num_fragments()), 0);
+  if (counted_in_.size() < mt.num_tets()) counted_in_.resize(mt.num_tets());
 }
 
 void Frontier::follow_edit(const Mt& mt, std::span<const FragId> joined, std::span<const TetId> changed_tets,
-                           std::span<const FragId> births) {
+                           std::span<const FragId> regrouped) {
   sync(mt);
   for (FragId f : joined)
     if (!in_set_.contains(f)) in_set_.insert(f);
@@ -65,14 +66,18 @@ void Frontier::follow_edit(const Mt& mt, std::span<const FragId> joined, std::sp
     const bool wanted = mt.alive(t) && in_set_.contains(mt.birth(t)) &&
                         !(mt.death(t).valid() && in_set_.contains(mt.death(t)));
     if (wanted && !tets_.contains(t))
-      add_mesh_tet(mt, t);
+      add_tet(mt, t);
     else if (!wanted && tets_.contains(t))
-      remove_mesh_tet(mt, t);
+      remove_tet(mt, t);
   }
-  for (FragId f : births) {
+  for (FragId f : regrouped) {
     if (!f.valid()) continue;
     std::int32_t uses = 0;
-    for (TetId t : mt.created(f)) uses += tets_.contains(t) ? 1 : 0;
+    for (TetId t : mt.created(f)) {
+      if (!tets_.contains(t)) continue;
+      counted_in_[t.index()] = f;
+      ++uses;
+    }
     frag_uses_[f.index()] = uses;
     if (uses > 0 && !visible_.contains(f)) visible_.insert(f);
     if (uses == 0 && visible_.contains(f)) visible_.erase(f);
@@ -80,27 +85,20 @@ void Frontier::follow_edit(const Mt& mt, std::span<const FragId> joined, std::sp
   version_ = next_version();
 }
 
-void Frontier::add_mesh_tet(const Mt& mt, TetId t) {
+void Frontier::add_tet(const Mt& mt, TetId t) {
   tets_.insert(t);
   for (VertId v : mt.tet(t))
     if (vert_uses_[v.index()]++ == 0) verts_.insert(v);
-}
-
-void Frontier::remove_mesh_tet(const Mt& mt, TetId t) {
-  tets_.erase(t);
-  for (VertId v : mt.tet(t))
-    if (--vert_uses_[v.index()] == 0) verts_.erase(v);
-}
-
-void Frontier::add_tet(const Mt& mt, TetId t) {
-  add_mesh_tet(mt, t);
   const FragId b = mt.birth(t);
+  counted_in_[t.index()] = b;
   if (frag_uses_[b.index()]++ == 0) visible_.insert(b);
 }
 
 void Frontier::remove_tet(const Mt& mt, TetId t) {
-  remove_mesh_tet(mt, t);
-  const FragId b = mt.birth(t);
+  tets_.erase(t);
+  for (VertId v : mt.tet(t))
+    if (--vert_uses_[v.index()] == 0) verts_.erase(v);
+  const FragId b = counted_in_[t.index()];
   if (--frag_uses_[b.index()] == 0) visible_.erase(b);
 }
 
@@ -199,7 +197,8 @@ TetMesh Frontier::to_tet_mesh(const Mt& mt, std::vector<VertId>* vertex_ids) con
 
 std::size_t Frontier::bytes() const {
   return in_set_.bytes() + tets_.bytes() + verts_.bytes() + visible_.bytes() +
-         vert_uses_.capacity() * sizeof(std::int32_t) + frag_uses_.capacity() * sizeof(std::int32_t);
+         vert_uses_.capacity() * sizeof(std::int32_t) + frag_uses_.capacity() * sizeof(std::int32_t) +
+         counted_in_.capacity() * sizeof(FragId);
 }
 
 ValidationReport validate_frontier(const Mt& mt, const Frontier& frontier) {
@@ -247,6 +246,12 @@ ValidationReport validate_frontier(const Mt& mt, const Frontier& frontier) {
       report.add("frontier: vertex " + std::to_string(v) + (listed[v] ? " is listed but unused" : " is used but not listed"));
   for (TetId t : frontier.tets())
     if (!frontier.is_visible(mt.birth(t))) report.add("frontier: fragment " + name(mt.birth(t)) + " is not listed visible");
+  std::vector<std::int32_t> shown(mt.num_fragments(), 0);
+  for (TetId t : frontier.tets()) ++shown[mt.birth(t).index()];
+  for (std::size_t f = 0; f < shown.size(); ++f)
+    if (frontier.shown_tets(FragId(f)) != shown[f])
+      report.add("frontier: fragment " + std::to_string(f) + " is counted with " +
+                 std::to_string(frontier.shown_tets(FragId(f))) + " tets of the mesh, it has " + std::to_string(shown[f]));
   for (FragId f : frontier.visible_fragments()) {
     const auto created = mt.created(f);
     if (std::none_of(created.begin(), created.end(), [&](TetId t) { return frontier.has_tet(t); }))

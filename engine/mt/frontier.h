@@ -68,14 +68,16 @@ class Frontier {
   // Follows an edit of the MT that kept every fragment's region (a cut:
   // tets replaced by pieces, fragments split into parts) without a pass over
   // the mesh: `joined` enter S (parts of members); `changed_tets` are the
-  // tets killed or made by the edit, each in the mesh afterwards when alive,
-  // born in S and not replaced in S; `births` holds every fragment whose
-  // created tets changed (where tets were killed, made or moved from or to),
-  // recounted for the visible set. Other tets keep their membership, so the
-  // result is from_fragments() of the new S. Costs the edit plus the
-  // created tets of `births`.
+  // tets killed, revived or made by the edit, each in the mesh afterwards
+  // when alive, born in S and not replaced in S; `regrouped` holds every
+  // fragment that tets left or joined without being killed or made (a
+  // fragment split into parts: it and its parts), recounted for the visible
+  // set. Other tets keep their membership, so the result is from_fragments()
+  // of the new S. Costs the edit plus the created tets of `regrouped`.
   void follow_edit(const Mt& mt, std::span<const FragId> joined, std::span<const TetId> changed_tets,
-                   std::span<const FragId> births);
+                   std::span<const FragId> regrouped);
+  // Tets of the mesh that f created (f is visible when there are any).
+  std::int32_t shown_tets(FragId f) const { return f.index() < frag_uses_.size() ? frag_uses_[f.index()] : 0; }
   // Changed by every refine / coarsen to a value no other frontier state has:
   // selective refinement checks it.
   std::uint64_t version() const { return version_; }
@@ -84,9 +86,6 @@ class Frontier {
  private:
   void add_tet(const Mt& mt, TetId t);
   void remove_tet(const Mt& mt, TetId t);
-  // The mesh's tets and vertices only (follow_edit recounts the visible set).
-  void add_mesh_tet(const Mt& mt, TetId t);
-  void remove_mesh_tet(const Mt& mt, TetId t);
 
   IndexSet<FragId> in_set_;              // S
   IndexSet<TetId> tets_;                 // the mesh
@@ -94,6 +93,10 @@ class Frontier {
   IndexSet<FragId> visible_;             // births of the mesh's tets
   std::vector<std::int32_t> vert_uses_;  // (n_vertices) mesh tets holding the vertex
   std::vector<std::int32_t> frag_uses_;  // (n_fragments) mesh tets each fragment created
+  // (n_tets) The fragment a mesh tet is counted in by frag_uses_: its birth
+  // when it entered the mesh or its fragment was recounted. A tet an edit
+  // killed has no birth any more, and this says which count it leaves.
+  std::vector<FragId> counted_in_;
   std::uint64_t version_ = 0;
 };
 

@@ -162,6 +162,49 @@ TEST(MtCut, ReusedWorkspaceGivesTheSameMtAsFreshOnes) {
   }
 }
 
+TEST(MtCut, CandidatesOfTheSamePolygonFindWhatTheWalkFinds) {
+  // A cut handed the candidates an earlier cut of its polygon found (with
+  // nothing editing the MT between) finds what its own walk of the index
+  // finds, over the whole polygon and within a search box around part of
+  // it, on an MT that the earlier polygons split (dead tets and pieces in
+  // the index).
+  for (const std::string name : {"ellipsoid", "liver"}) {
+    std::mt19937_64 rng(47);
+    Mt mt = cut_test_mt(name);
+    engine::TetBvh bvh(mt);
+    const engine::Aabb box = mt_box(mt);
+    cut::SplitTable table;
+    std::size_t compared = 0;
+    for (int i = 0; i < 12; ++i) {
+      const CutPolygon polygon = random_polygon(box, rng, i % 3 == 2);
+      cut::MtCutDef def;
+      const cut::MtCut whole(mt, bvh, polygon, {}, def, table);
+      const std::string where = name + " cut " + std::to_string(i);
+      // A search box: a random corner of the polygon's box.
+      engine::Aabb search;
+      std::uniform_real_distribution<double> u(0.0, 1.0);
+      for (int k = 0; k < 2; ++k) {
+        const Vec3 t(u(rng), u(rng), u(rng));
+        search.extend(polygon.box_min() + t.cwiseProduct(polygon.box_max() - polygon.box_min()));
+      }
+      for (const engine::Aabb* within : std::array<const engine::Aabb*, 2>{nullptr, &search}) {
+        cut::MtCutDef walked_def, given_def;
+        walked_def.search = given_def.search = within;
+        given_def.candidates = &whole.candidates();
+        const cut::MtCut walked(mt, bvh, polygon, {}, walked_def, table);
+        const cut::MtCut given(mt, bvh, polygon, {}, given_def, table);
+        EXPECT_EQ(given.candidates(), walked.candidates()) << where << (within ? ", in a search box" : "");
+        EXPECT_EQ(given.tets_to_change(), walked.tets_to_change()) << where;
+        EXPECT_EQ(given.points_to_make(), walked.points_to_make()) << where;
+        compared += walked.candidates().size();
+      }
+      cut_mt(mt, bvh, polygon, {}, {}, &table);
+      ASSERT_TRUE(mt.validate().ok()) << where << ": " << mt.validate().summary();
+    }
+    EXPECT_GT(compared, 0u) << name << ": no polygon found a tet";
+  }
+}
+
 TEST(MtCut, SeparatingCutGivesTwoValidPieces) {
   for (const std::string name : {"ellipsoid", "liver", "paper"}) {
     Mt mt = cut_test_mt(name);
