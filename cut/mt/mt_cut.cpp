@@ -215,7 +215,9 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
       if (!on_split_vertex || positive[i]) continue;
     }
     meets_old_crack_ = meets_old_crack_ || mt.error_inherited(p.tet);
-    if (def.select != CutSelect::kAll && (def.select == CutSelect::kComplete) != (p.split && crossed_completely(configs[i]))) {
+    const bool complete = p.split && crossed_completely(configs[i]);
+    crossed_partially_ += p.split && !complete;
+    if (def.select != CutSelect::kAll && (def.select == CutSelect::kComplete) != complete) {
       ++left_whole_;
       for (VertId v : tet) left_whole_box_.extend(geometry[v.index()]);
       continue;

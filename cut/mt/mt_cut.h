@@ -126,6 +126,9 @@ class MtCut {
   // points the cut makes.
   std::size_t tets_to_change() const { return pending_.size(); }
   std::size_t tets_left_whole() const { return left_whole_; }
+  // Tets found to split that the polygon's outline passes through (not
+  // crossed completely), whatever `select`: the crack's front in the tissue.
+  std::size_t tets_crossed_partially() const { return crossed_partially_; }
   // Some tet found to change is a piece of an earlier cut (the polygon meets
   // an old crack there).
   bool meets_old_crack() const { return meets_old_crack_; }
@@ -208,6 +211,7 @@ class MtCut {
   std::vector<Tet> piece_tets_;     // the pieces of every pending tet, final vertex ids
   std::size_t new_tets_ = 0;        // pieces of split tets
   std::size_t left_whole_ = 0;      // found to change, not of `select`
+  std::size_t crossed_partially_ = 0;
   engine::Aabb left_whole_box_;
   std::vector<TetId> candidates_;
   bool meets_old_crack_ = false;

@@ -467,12 +467,15 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
       made.insert(made.end(), a.tx.changes.made_vertices.begin(), a.tx.changes.made_vertices.end());
       crack_.record(*a.crack_polygon, made);
     }
-    // A part's crack with a front inside the tissue (a commit that left
-    // tets whole, and the front cut behind it) separates nothing but a lobe
-    // it went round: its pieces are counted once a commit leaves no front,
-    // or at the part's end, not every frame (a pass over the MT each).
-    const bool front_open = a.record && (a.select == CutSelect::kFront ||
-                                         (a.select == CutSelect::kComplete && a.cut->tets_left_whole() > 0));
+    // A stroke's crack with a front inside the tissue (a part's commit that
+    // left tets whole, and the front cut behind it; a provisional cut whose
+    // outline passes through a tet) separates nothing but a lobe it went
+    // round: its pieces are counted once a cut leaves no front, or at the
+    // part's end, not every frame (a pass over the MT each).
+    const bool front_open =
+        (a.record && (a.select == CutSelect::kFront ||
+                      (a.select == CutSelect::kComplete && a.cut->tets_left_whole() > 0))) ||
+        (a.provisional && a.cut->tets_crossed_partially() > 0);
     if (a.provisional) held_ = std::move(a.tx);
     active_.reset();  // `a` is gone from here
     if (def_.report_pieces && pieces_stale_ && !front_open) {

@@ -109,6 +109,40 @@ TEST(TimeCriticalCutter, MillisecondBudgetAndProgress) {
   EXPECT_GE(calls, 3u);
 }
 
+TEST(TimeCriticalCutter, AProvisionalCutCountsPiecesOnlyWithoutAFront) {
+  // A provisional cut whose outline passes through the tissue (a stroke's
+  // blade in it) separates nothing but a lobe, and the next frame takes it
+  // back: its pieces are not counted (a pass over the MT). The same cut
+  // through the whole object counts them. A fresh cutter's pieces are stale.
+  Mt mt = cut_test_mt("ellipsoid");
+  engine::TetBvh bvh(mt);
+  Frontier frontier = Frontier::coarsest(mt);
+  const engine::Aabb box = mt_box(mt);
+  const Vec3 size = box.hi - box.lo, centre = box.center();
+  const auto square = [&](double y_hi) {
+    const double x = centre.x() + 0.013 * size.x();
+    const double y_lo = box.lo.y() - 0.1 * size.y(), z_lo = box.lo.z() - 0.1 * size.z(),
+                 z_hi = box.hi.z() + 0.1 * size.z();
+    return CutPolygon::from_points({Vec3(x, y_lo, z_lo), Vec3(x, y_hi, z_lo), Vec3(x, y_hi, z_hi), Vec3(x, y_lo, z_hi)});
+  };
+  TimeCriticalCutter cutter;
+  cutter.submit_provisional(square(centre.y()));  // into the middle
+  TimeCriticalCutter::RunResult partial = cutter.run(mt, bvh, frontier, CutBudget::unlimited());
+  cut::follow_cut(mt, frontier, partial.changes);
+  EXPECT_GT(partial.changes.replaced.size(), 0u);
+  EXPECT_FALSE(partial.pieces.has_value()) << "a provisional cut with a front counted pieces";
+  const std::optional<cut::CutRetraction> back = cutter.retract(mt, bvh);
+  ASSERT_TRUE(back.has_value());
+  cut::follow_retraction(mt, frontier, *back);
+  cutter.submit_provisional(square(box.hi.y() + 0.1 * size.y()));  // right through
+  TimeCriticalCutter::RunResult through = cutter.run(mt, bvh, frontier, CutBudget::unlimited());
+  cut::follow_cut(mt, frontier, through.changes);
+  EXPECT_TRUE(through.pieces.has_value()) << "a provisional cut right through counted no pieces";
+  for (const auto& report : {mt.validate(), bvh.validate(mt), engine::validate_frontier(mt, frontier),
+                             cutter.validate(mt)})
+    EXPECT_TRUE(report.ok()) << report.summary();
+}
+
 TEST(TimeCriticalCutter, MapFragmentSetAddsEveryPart) {
   const std::vector<FragId> s = {FragId(0), FragId(2), FragId(5)};
   const std::vector<cut::FragmentSplit> splits = {{FragId(2), {FragId(2), FragId(9)}},
