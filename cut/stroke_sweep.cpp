@@ -11,6 +11,15 @@
 namespace mtcut::cut {
 namespace {
 
+// The motion of the blade's middle from `from` to `to`, across the blade
+// at `to` (a blade pushed along itself does not head anywhere).
+Vec3 heading(const std::pair<Vec3, Vec3>& from, const std::pair<Vec3, Vec3>& to) {
+  const Vec3 move = 0.5 * ((to.first + to.second) - (from.first + from.second));
+  const Vec3 axis = to.second - to.first;
+  const double length2 = axis.squaredNorm();
+  return length2 > 0 ? Vec3(move - axis * (axis.dot(move) / length2)) : move;
+}
+
 // The best plane through points: centroid and orthonormal axes (u, v in the
 // plane, n its normal), by principal components.
 struct Plane {
@@ -154,6 +163,7 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
     // The next part overlaps this one by half a sweep (see the header): it
     // starts midway between the last two poses, then the last pose.
     out = close_part();
+    turned_back_ = heading(blades_.front(), blades_.back()).dot(heading(blades_.back(), next)) < 0;
     const Blade last = blades_.back();
     const Blade before = blades_[blades_.size() - 2];
     clear_part();
@@ -199,13 +209,16 @@ StrokeAdvance StrokeSweep::advance(std::span<const BladePose> poses) {
     std::vector<CutPolygon> ended;
     out.swept.extend(pose.base);
     out.swept.extend(pose.tip);
+    bool turned_back = false;
     if (pose.engaged) {
       out.moved = out.moved || blades_.empty() || pose.base != blades_.back().first || pose.tip != blades_.back().second;
       ended = add(pose.base, pose.tip);
+      turned_back = turned_back_;
     } else if (active()) {
       ended = finish();
       out.moved = true;
     }
+    out.turned_back.insert(out.turned_back.end(), ended.size(), turned_back ? 1 : 0);
     out.ended.insert(out.ended.end(), std::make_move_iterator(ended.begin()), std::make_move_iterator(ended.end()));
   }
   return out;

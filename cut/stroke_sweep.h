@@ -40,6 +40,7 @@
 // guard). A stroke whose poses all come in one frame has the same parts and
 // polygons.
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <utility>
@@ -69,6 +70,12 @@ struct BladePose {
 // What a frame's poses did to the stroke.
 struct StrokeAdvance {
   std::vector<CutPolygon> ended;  // polygons of the parts that ended, in order
+  // (ended) 1 where the blade turned back as that part ended: its heading
+  // (the motion of the blade's middle, across the blade) turned by more
+  // than 90 degrees, from the part's first pose to its last against the
+  // last to the next. A V keeps its two planes under 45 degrees apart, so
+  // only the heading tells it from a gentle turn (TimeCriticalCutter::recut).
+  std::vector<std::uint8_t> turned_back;
   bool moved = false;             // the part in progress changed, or the stroke ended
   engine::Aabb swept;             // box of the blade's poses this frame and the one before them
 };
@@ -133,6 +140,7 @@ class StrokeSweep {
   PartSums sums_;
   std::vector<Vec3> hull_corners_;  // the part's hull corners (its poses until a hull is taken)
   std::optional<CutPolygon> plane_;  // the part's fixed plane (its first polygon wide enough)
+  bool turned_back_ = false;         // the blade turned back where add() last ended a part
   // The part's polygon over `points`, on its fixed plane once there is one.
   std::vector<CutPolygon> part_polygon(const std::vector<Vec3>& points) const;
 };

@@ -202,7 +202,8 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     if (stroke_.active() && !blades.empty() && blades.back().engaged)
       part_cut_blade_ = {blades.back().base, blades.back().tip};
     m.cuts_started = advance.ended.size() + (current ? 1 : 0);
-    if (const auto retraction = cutter_.recut(mt_, bvh_, advance.ended, current, stroke_.plane_fixed())) {
+    if (const auto retraction =
+            cutter_.recut(mt_, bvh_, advance.ended, advance.turned_back, current, stroke_.plane_fixed())) {
       cut::follow_retraction(mt_, frontier_, *retraction);
       if (m.cuts_started == 0 && retraction->fragments_removed > 0)
         pieces_ = cut::find_pieces(mt_).count;  // the stroke left nothing to cut

@@ -8,7 +8,7 @@ StrokeStep cut_stroke_step(StrokeSweep& stroke, TimeCriticalCutter& cutter, Mt& 
   const StrokeAdvance advance = stroke.advance(poses);
   out.recut = advance.moved || !advance.ended.empty();
   if (out.recut) {
-    out.retraction = cutter.recut(mt, bvh, advance.ended, stroke.current(), stroke.plane_fixed());
+    out.retraction = cutter.recut(mt, bvh, advance.ended, advance.turned_back, stroke.current(), stroke.plane_fixed());
     if (out.retraction) follow_retraction(mt, frontier, *out.retraction);
   }
   if (out.recut || cutter.frozen()) {

@@ -110,7 +110,11 @@ const MtChangeReport* TimeCriticalCutter::provisional_changes() const {
 }
 
 std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
+                                                       std::span<const std::uint8_t> turned_back,
                                                        const std::optional<CutPolygon>& current, bool plane_fixed) {
+  if (turned_back.size() != ended.size())
+    throw std::invalid_argument("TimeCriticalCutter::recut: " + std::to_string(turned_back.size()) +
+                                " turn flags for " + std::to_string(ended.size()) + " ended parts");
   std::optional<CutRetraction> out = retract(mt, bvh);
   for (std::size_t i = 0; i < ended.size(); ++i) {
     // The polygon cut for good: the part's (the first ended one, if a part
@@ -132,7 +136,7 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     }
     if (!polygon) polygon = ended[i];
     const CutPolygon* next = i + 1 < ended.size() ? &ended[i + 1] : current ? &*current : nullptr;
-    pivot_ = next ? pivot_between(*polygon, *next) : std::nullopt;
+    pivot_ = next && !turned_back[i] ? pivot_between(*polygon, *next) : std::nullopt;
     if (pivot_ && (bvh.locate(mt, pivot_->a).valid() || bvh.locate(mt, pivot_->b).valid())) pivot_.reset();
     crossing_.reset();
     if (next && !pivot_) {

@@ -118,7 +118,10 @@ class TimeCriticalCutter {
   // on the edge is split), so the two parts' cracks are one surface and the
   // tissue they go round comes apart. Two parts that each cut the tets at
   // the turn partially would leave a bridge there. A sharper turn starts a
-  // new crack, and so does a turn where an end of the blade lies
+  // new crack, and so does a turn back (`turned_back`, per ended part:
+  // StrokeAdvance; a V's planes are under kMaxContinuedTurn apart, but the
+  // next part lies behind the edge, not across it) and a turn where an end
+  // of the blade lies
   // inside the tissue: there the old crack's end would meet the new sheet
   // at a corner inside the tissue, and a coarse tet around that corner, its
   // vertices sided by the nearer of two planes, would hold both sheets on
@@ -130,6 +133,7 @@ class TimeCriticalCutter {
   // apart too, with a short stub of each crack beyond the other. Returns the
   // retraction.
   std::optional<CutRetraction> recut(Mt& mt, TetBvh& bvh, std::span<const CutPolygon> ended,
+                                     std::span<const std::uint8_t> turned_back,
                                      const std::optional<CutPolygon>& current, bool plane_fixed);
   static constexpr double kMaxContinuedTurn = 45.0;  // degrees between two parts' planes
   // Of the reach of the tets at a sharp turn (above). Less leaves bridges of

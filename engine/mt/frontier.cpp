@@ -251,7 +251,8 @@ ValidationReport validate_frontier(const Mt& mt, const Frontier& frontier) {
   for (std::size_t f = 0; f < shown.size(); ++f)
     if (frontier.shown_tets(FragId(f)) != shown[f])
       report.add("frontier: fragment " + std::to_string(f) + " is counted with " +
-                 std::to_string(frontier.shown_tets(FragId(f))) + " tets of the mesh, it has " + std::to_string(shown[f]));
+                 std::to_string(frontier.shown_tets(FragId(f))) + " tets of the mesh, it has " +
+                 std::to_string(shown[f]));
   for (FragId f : frontier.visible_fragments()) {
     const auto created = mt.created(f);
     if (std::none_of(created.begin(), created.end(), [&](TetId t) { return frontier.has_tet(t); }))

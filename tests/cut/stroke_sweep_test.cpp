@@ -2,10 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 namespace mtcut::cut {
 namespace {
@@ -88,6 +92,39 @@ TEST(StrokeSweep, TurnEndsThePartAndTheNextOverlapsIt) {
     const double s = i / 20.0;  // along the L
     const Vec3 x = s <= 1 ? Vec3(0, s, 0.5) : Vec3(s - 1, 1, 0.5);
     EXPECT_LT(distance_to_cut(polygons, x), 1e-3) << "s = " << s;
+  }
+}
+
+TEST(StrokeSweep, APartThatEndsWhereTheBladeTurnsBackSaysSo) {
+  // A vertical blade along +y, then turning by `degrees` in xy (a frame of
+  // five poses at a time): the first part ends at the turn, flagged turned
+  // back exactly when the heading turned by more than 90 degrees (a V's
+  // planes are closer than an L's); the stroke's last part, ended by the
+  // blade lifting, is not.
+  for (const double degrees : {30.0, 60.0, 120.0, 150.0, 170.0, -150.0}) {
+    SCOPED_TRACE(std::to_string(degrees) + " degrees");
+    const double a = degrees * std::acos(-1.0) / 180;
+    const Vec3 along(std::sin(a), std::cos(a), 0);
+    std::vector<BladePose> path;
+    for (int f = 0; f <= 10; ++f) path.push_back({Vec3(0, 0.1 * f, 1), Vec3(0, 0.1 * f, 0), true});
+    for (int f = 1; f <= 10; ++f) {
+      const Vec3 at = Vec3(0, 1, 0) + 0.1 * f * along;
+      path.push_back({at + Vec3(0, 0, 1), at, true});
+    }
+    path.push_back({path.back().base, path.back().tip, false});
+    StrokeSweep stroke;
+    std::vector<std::uint8_t> flags;
+    std::size_t ended = 0;
+    for (std::size_t k = 0; k < path.size(); k += 5) {
+      const std::size_t n = std::min<std::size_t>(5, path.size() - k);
+      const StrokeAdvance advance = stroke.advance(std::span(path).subspan(k, n));
+      ASSERT_EQ(advance.turned_back.size(), advance.ended.size());
+      flags.insert(flags.end(), advance.turned_back.begin(), advance.turned_back.end());
+      ended += advance.ended.size();
+    }
+    ASSERT_GE(flags.size(), 2u);
+    EXPECT_EQ(flags.front(), std::abs(degrees) > 90 ? 1 : 0);
+    EXPECT_EQ(flags.back(), 0);
   }
 }
 

@@ -413,18 +413,23 @@ TEST(World, CurvedStrokesThroughTheSaggingOrganKeepEveryFrameValid) {
 
 // A stroke through the whole depth that turns sharply inside the organ, at
 // 2 mm a frame: along y at x = 3 cm from outside to the corner at y = 0,
-// then along +x out of the front end. Without gravity the map to rest space
-// is near the identity: the two legs' cracks cross at the corner and the
-// corner of the organ they go round comes off. Every frame valid, no cut
+// then on to `end` (x, y) out of the organ. Without gravity the map to rest
+// space is near the identity: the two legs' cracks cross at the corner and
+// the part of the organ they go round comes off. Every frame valid, no cut
 // refused.
-TEST(World, ASharpTurnThroughTheRestingOrganCutsOffTheCorner) {
+void cut_off_the_corner(const Vec3& end) {
   WorldDef def = organ_def();
   def.environment.gravity = Vec3::Zero();
   World world(organ_mt(2000), def);
   std::vector<ScalpelPose> poses;
   for (int k = 0; k <= 30; ++k) poses.push_back(blade_at(0.03, -0.06 + 0.06 * k / 30));
-  for (int k = 1; k <= 35; ++k) poses.push_back(blade_at(0.03 + 0.07 * k / 35, 0.0));
-  poses.push_back(blade_at(0.1, 0.0, false));
+  const Vec3 corner(0.03, 0.0, 0.0);
+  const int frames = static_cast<int>(std::ceil((end - corner).norm() / 0.002));
+  for (int k = 1; k <= frames; ++k) {
+    const Vec3 at = corner + (end - corner) * k / frames;
+    poses.push_back(blade_at(at.x(), at.y()));
+  }
+  poses.push_back(blade_at(end.x(), end.y(), false));
   for (const ScalpelPose& pose : poses) {
     world.step(pose);
     const auto report = world.validate();
@@ -436,6 +441,13 @@ TEST(World, ASharpTurnThroughTheRestingOrganCutsOffTheCorner) {
   EXPECT_EQ(world.nan_events(), 0u);
   EXPECT_EQ(world.pieces(), 2u);
 }
+
+// An L: along +x out of the front end.
+TEST(World, ASharpTurnThroughTheRestingOrganCutsOffTheCorner) { cut_off_the_corner(Vec3(0.1, 0.0, 0.0)); }
+
+// A V: back towards -y, 153 degrees from the first leg (the two legs'
+// planes 27 degrees apart): the wedge between the legs comes off.
+TEST(World, AVThroughTheRestingOrganCutsOffTheWedge) { cut_off_the_corner(Vec3(0.06, -0.06, 0.0)); }
 
 // The frontier's tets, ascending.
 std::vector<std::int32_t> sorted_tets(const engine::Frontier& frontier) {

@@ -262,7 +262,7 @@ INSTANTIATE_TEST_SUITE_P(Shards, StrokeCutterRandom, ::testing::Range(0, kShards
 
 // Random corner cuts on the convex builtin shapes: two legs through the
 // whole depth, from outside to a point inside and out again, turning
-// sharply there (60 to 130 degrees, either way), in 20 to 80 steps and all
+// sharply there (60 to 165 degrees, either way: V's too), in 20 to 80 steps and all
 // in one step: valid after every step, and the corner comes off (two
 // pieces) with no cut refused, as the two cracks cross where the stroke
 // turned, in all but at most one stroke in 20 (a bridge of tets both
@@ -286,8 +286,9 @@ TEST(StrokeCutter, SharpTurnsThroughTheWholeDepthCutOffTheCorner) {
     const Vec3 corner = box.center() + Vec3((u(rng) - 0.5) * 0.5 * size.x(), (u(rng) - 0.5) * 0.5 * size.y(), 0);
     const double heading = 2 * M_PI * u(rng);
     // (A V, a turn back of over 135 degrees, has its planes less than 45
-    // degrees apart: it pivots as a gentle turn does, time_critical_cutter.h.)
-    const double turn = (u(rng) < 0.5 ? -1 : 1) * (60.0 + 70.0 * u(rng)) * M_PI / 180;
+    // degrees apart: the sweep tells it from a gentle turn by the blade's
+    // heading, StrokeAdvance::turned_back.)
+    const double turn = (u(rng) < 0.5 ? -1 : 1) * (60.0 + 105.0 * u(rng)) * M_PI / 180;
     const double reach = 1.5 * size.norm();
     const Vec3 start = corner - reach * Vec3(std::cos(heading), std::sin(heading), 0);
     const Vec3 end = corner + reach * Vec3(std::cos(heading + turn), std::sin(heading + turn), 0);

@@ -123,7 +123,8 @@ TEST(TimeCriticalCutter, AProvisionalCutCountsPiecesOnlyWithoutAFront) {
     const double x = centre.x() + 0.013 * size.x();
     const double y_lo = box.lo.y() - 0.1 * size.y(), z_lo = box.lo.z() - 0.1 * size.z(),
                  z_hi = box.hi.z() + 0.1 * size.z();
-    return CutPolygon::from_points({Vec3(x, y_lo, z_lo), Vec3(x, y_hi, z_lo), Vec3(x, y_hi, z_hi), Vec3(x, y_lo, z_hi)});
+    return CutPolygon::from_points(
+        {Vec3(x, y_lo, z_lo), Vec3(x, y_hi, z_lo), Vec3(x, y_hi, z_hi), Vec3(x, y_lo, z_hi)});
   };
   TimeCriticalCutter cutter;
   cutter.submit_provisional(square(centre.y()));  // into the middle
