@@ -580,8 +580,9 @@ Frontier map_frontier(const Mt& mt, const Frontier& frontier, std::span<const Fr
 
 void follow_cut(const Mt& mt, Frontier& frontier, const MtChangeReport& changes) {
   if (changes.empty()) return;
-  // mark[f]: 1 f joins S here, 2 f is already listed in `regrouped`.
-  std::vector<std::uint8_t> mark(mt.num_fragments(), 0);
+  // mark[f]: 1 f joins S here, 2 f is already listed in `regrouped` (a
+  // provisional cut splits no fragment: no marks).
+  std::vector<std::uint8_t> mark(changes.fragment_splits.empty() ? 0 : mt.num_fragments(), 0);
   std::vector<FragId> joined, regrouped;
   for (const FragmentSplit& s : changes.fragment_splits) {  // in order: a part may split again
     const bool in_s = frontier.contains(s.old) || (mark[s.old.index()] & 1);
