@@ -11,6 +11,9 @@
 namespace mtcut::cut {
 namespace {
 
+// A heading turned by more than 135 degrees turned back (StrokeAdvance::turned_back).
+constexpr double kTurnedBackCos = 0.7071067811865476;  // cos(45 degrees)
+
 // The motion of the blade's middle from `from` to `to`, across the blade
 // at `to` (a blade pushed along itself does not head anywhere).
 Vec3 heading(const std::pair<Vec3, Vec3>& from, const std::pair<Vec3, Vec3>& to) {
@@ -163,7 +166,8 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
     // The next part overlaps this one by half a sweep (see the header): it
     // starts midway between the last two poses, then the last pose.
     out = close_part();
-    turned_back_ = heading(blades_.front(), blades_.back()).dot(heading(blades_.back(), next)) < 0;
+    const Vec3 was = heading(blades_.front(), blades_.back()), goes = heading(blades_.back(), next);
+    turned_back_ = was.dot(goes) < -kTurnedBackCos * was.norm() * goes.norm();
     const Blade last = blades_.back();
     const Blade before = blades_[blades_.size() - 2];
     clear_part();

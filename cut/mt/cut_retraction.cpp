@@ -1,6 +1,5 @@
 #include "cut/mt/cut_retraction.h"
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 

@@ -169,7 +169,6 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   for (TetId t : found) classifier.add_candidate(mt.tet(t));
   add_tets_around_on_vertices(mt, bvh, classifier, record, found);
   classifier.finalize();
-  candidates_ = found;
 
   if (table.scheme() != def_.scheme) throw std::invalid_argument("MtCut: the split table is for another scheme");
   // Which tets change, and their pieces over vertex ids (new points are
@@ -228,6 +227,7 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
       resolve_relabel(p, tet, classifier);
     pending_.push_back(p);
   }
+  candidates_ = std::move(found);
 
   edge_point_ = {};  // indexes the scan's numbering, which number_points_by_key changes
   number_points_by_key();

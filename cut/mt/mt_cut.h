@@ -83,11 +83,14 @@ struct MtCutDef {
   // searched.
   const engine::Aabb* search = nullptr;
   const CutPolygon* grown_from = nullptr;
-  // The tets the search takes instead of walking the index: those the last
-  // cut of the same polygon found (candidates()), when nothing but that cut
-  // has edited the MT since and `search` lies in what it searched (a part's
-  // front after its commit). The dead are passed over, the others tested as
-  // the walk tests them. Read while the cut is searched.
+  // The tets the search takes instead of walking the index (neither walk
+  // above is made): those the last cut of the same polygon found
+  // (candidates()), when nothing but that cut has edited the MT since and
+  // every tet this cut may change is among them (a part's front after its
+  // commit: a tet the outline passes through reaches past the commit's
+  // `grown_from`, so the commit found it, and the tets it made are its
+  // record's). The dead and those off the search box are passed over.
+  // Read while the cut is searched.
   const std::vector<TetId>* candidates = nullptr;
   // Step 3 (UpdateProcessFragment): the fragments the cut separates are
   // decomposed. Off for a provisional cut, which the next frame takes back
@@ -126,8 +129,9 @@ class MtCut {
   // points the cut makes.
   std::size_t tets_to_change() const { return pending_.size(); }
   std::size_t tets_left_whole() const { return left_whole_; }
-  // Tets found to split that the polygon's outline passes through (not
-  // crossed completely), whatever `select`: the crack's front in the tissue.
+  // Tets found to split and not crossed completely (the polygon's outline
+  // passes through them, or a vertex lies on its plane), whatever
+  // `select`: the crack's front in the tissue.
   std::size_t tets_crossed_partially() const { return crossed_partially_; }
   // Some tet found to change is a piece of an earlier cut (the polygon meets
   // an old crack there).

@@ -353,11 +353,11 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
     }
   }
   def.search = search ? &*search : nullptr;
-  // The front right behind its kept commit takes the tets the commit found:
-  // its box is the one of the tets the commit left whole.
+  // The front right behind its kept commit takes the tets the commit found
+  // (MtCutDef::candidates): every tet it may change is one of them.
   const std::optional<Searched> searched = std::exchange(searched_, std::nullopt);
   if (searched && a.select == CutSelect::kFront && search && searched->record == a.record.get() &&
-      searched->revision == mt.revision())
+      searched->instance == mt.instance() && searched->revision == mt.revision())
     def.candidates = &searched->tets;
   // A polygon of the stroke continues its crack where it starts on it, and
   // makes its front exactly on the edge the next one starts on.
@@ -463,7 +463,7 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     pieces_stale_ = pieces_stale_ || (a.split_every_level && a.select != CutSelect::kFront);
     if (a.record && a.select == CutSelect::kComplete) {
       a.record->add(mt, a.tx.changes);
-      searched_ = Searched{a.record.get(), mt.revision(), a.cut->candidates()};
+      searched_ = Searched{a.record.get(), mt.instance(), mt.revision(), a.cut->candidates()};
     }
     if (a.crack_polygon) {  // with the part's commits, everything its crack holds
       std::vector<MadeVertex> made;

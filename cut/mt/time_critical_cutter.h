@@ -282,12 +282,12 @@ class TimeCriticalCutter {
   std::size_t first_cut_vertex_ = SIZE_MAX;  // the MT's vertex count when the first cut started
   bool provisional_queued_ = false;  // the queue's last entry is provisional
   std::optional<Part> part_;         // the part in progress, once its plane is fixed
-  // What a part's commit searched, for the front queued behind it (which
-  // searches within the commit's front box): kept only until the next cut
-  // starts, and used only if the MT is still at `revision`.
+  // What a part's commit found, for the front queued behind it: kept only
+  // until the next cut starts, and used only if the MT is still the same
+  // one at `revision`.
   struct Searched {
     const PartRecord* record = nullptr;
-    std::uint64_t revision = 0;
+    std::uint64_t instance = 0, revision = 0;
     std::vector<TetId> tets;
   };
   std::optional<Searched> searched_;

@@ -166,8 +166,9 @@ TEST(MtCut, CandidatesOfTheSamePolygonFindWhatTheWalkFinds) {
   // A cut handed the candidates an earlier cut of its polygon found (with
   // nothing editing the MT between) finds what its own walk of the index
   // finds, over the whole polygon and within a search box around part of
-  // it, on an MT that the earlier polygons split (dead tets and pieces in
-  // the index).
+  // it, on an MT that the earlier polygons split (pieces in the index). A
+  // part's front after its commit, where the commit's tets are dead, is
+  // checked by the part and stroke tests (PartRecord, StrokeCutter).
   for (const std::string name : {"ellipsoid", "liver"}) {
     std::mt19937_64 rng(47);
     Mt mt = cut_test_mt(name);
