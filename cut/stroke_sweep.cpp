@@ -11,8 +11,8 @@
 namespace mtcut::cut {
 namespace {
 
-// A heading turned by more than 135 degrees turned back (StrokeAdvance::turned_back).
-constexpr double kTurnedBackCos = 0.7071067811865476;  // cos(45 degrees)
+// A heading turned by more than 120 degrees turned back (StrokeAdvance::turned_back).
+constexpr double kTurnedBackCos = 0.5;  // cos(60 degrees)
 
 // The motion of the blade's middle from `from` to `to`, across the blade
 // at `to` (a blade pushed along itself does not head anywhere).

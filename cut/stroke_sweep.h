@@ -72,12 +72,14 @@ struct StrokeAdvance {
   std::vector<CutPolygon> ended;  // polygons of the parts that ended, in order
   // (ended) 1 where the blade turned back as that part ended: its heading
   // (the motion of the blade's middle, across the blade) turned by more
-  // than 135 degrees, from the part's first pose to its last against the
-  // last to the next. A V keeps its two planes under 45 degrees apart, so
-  // only the heading tells it from a gentle turn (TimeCriticalCutter::recut);
-  // a turn of 45 to 135 degrees turns a vertical blade's plane as much, and
-  // the margin keeps a small jitter of the blade at a part's end from
-  // reading as a turn back.
+  // than 120 degrees, from the part's first pose to its last against the
+  // last to the next. A V (over 135 degrees) keeps its two planes under 45
+  // degrees apart, so only the heading tells it from a gentle turn
+  // (TimeCriticalCutter::recut). Between 45 and 135 degrees a vertical
+  // blade's plane turns as much as its heading, so the flag changes nothing
+  // there: 120 leaves a V measured a little short (the heading of the last
+  // step, not the leg's) flagged, and a small jitter of the blade at a
+  // gentle turn's end unflagged.
   std::vector<std::uint8_t> turned_back;
   bool moved = false;             // the part in progress changed, or the stroke ended
   engine::Aabb swept;             // box of the blade's poses this frame and the one before them
