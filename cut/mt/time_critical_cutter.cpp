@@ -4,6 +4,7 @@
 #include "engine/input_error.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -30,12 +31,13 @@ Vec3 outward(const CutPolygon& polygon, const Vec3& a, const Vec3& b) {
   return farthest > 0 ? Vec3(-across) : across;
 }
 
-// How far past the line a-b, along `out`, the tets reach that hold a point
-// of the segment, at every resolution of the MT (0 when the segment misses
-// it): a crack's outline that far past the line leaves every such tet
-// crossed completely. The points are spaced along the segment's part in the
-// MT's box.
-double tets_reach_past(const Mt& mt, const engine::TetBvh& bvh, Vec3 a, Vec3 b, const Vec3& out) {
+// How far past the line a-b, along each of `out`, the tets reach that hold
+// a point of the segment, at every resolution of the MT (0 when the segment
+// misses it): a crack's outline that far past the line leaves every such
+// tet crossed completely. The points are spaced along the segment's part in
+// the MT's box; one pass serves both directions.
+std::array<double, 2> tets_reach_past(const Mt& mt, const engine::TetBvh& bvh, Vec3 a, Vec3 b,
+                                      const std::array<Vec3, 2>& out) {
   const engine::Aabb box = bvh.bounds();
   double t0 = 0, t1 = 1;  // the segment clipped to the box (slabs)
   for (int k = 0; k < 3 && t0 <= t1; ++k) {
@@ -48,14 +50,15 @@ double tets_reach_past(const Mt& mt, const engine::TetBvh& bvh, Vec3 a, Vec3 b, 
     t0 = std::max(t0, std::min(u, v));
     t1 = std::min(t1, std::max(u, v));
   }
-  if (t0 > t1) return 0;
+  std::array<double, 2> reach{0, 0};
+  if (t0 > t1) return reach;
   constexpr int kSamples = 128;
-  double reach = 0;
   for (int k = 0; k <= kSamples; ++k) {
     const double t = t0 + (t1 - t0) * k / kSamples;
     const Vec3 p = a + t * (b - a);
     bvh.for_each_containing(mt, p, [&](engine::TetId tet) {
-      for (engine::VertId v : mt.tet(tet)) reach = std::max(reach, (mt.position(v) - p).dot(out));
+      for (engine::VertId v : mt.tet(tet))
+        for (int d = 0; d < 2; ++d) reach[d] = std::max(reach[d], (mt.position(v) - p).dot(out[d]));
       return true;
     });
   }
@@ -141,10 +144,10 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     crossing_.reset();
     if (next && !pivot_) {
       if (const std::optional<Pivot> turn = turn_edge(*polygon, *next)) {
-        const Vec3 back = outward(*next, turn->a, turn->b);
-        crossing_ = Crossing{turn->a, turn->b, kCrossingReach * tets_reach_past(mt, bvh, turn->a, turn->b, back)};
-        polygon = past(*polygon, Crossing{turn->a, turn->b,
-                                          kCrossingReach * tets_reach_past(mt, bvh, turn->a, turn->b, turn->forward)});
+        const auto [ahead, behind] =
+            tets_reach_past(mt, bvh, turn->a, turn->b, {turn->forward, outward(*next, turn->a, turn->b)});
+        crossing_ = Crossing{turn->a, turn->b, kCrossingReach * behind};
+        polygon = past(*polygon, Crossing{turn->a, turn->b, kCrossingReach * ahead});
       }
     }
     submit_ended(*polygon, std::move(record), pivot_);

@@ -121,12 +121,11 @@ class TimeCriticalCutter {
   // new crack, and so does a turn back (`turned_back`, per ended part:
   // StrokeAdvance; a V's planes are under kMaxContinuedTurn apart, but the
   // next part lies behind the edge, not across it) and a turn where an end
-  // of the blade lies
-  // inside the tissue: there the old crack's end would meet the new sheet
-  // at a corner inside the tissue, and a coarse tet around that corner, its
-  // vertices sided by the nearer of two planes, would hold both sheets on
-  // one edge (a pinch at a resolution between the finest and the
-  // coarsest). The two cracks cross: the ended polygon goes on past the
+  // of the blade lies inside the tissue: there the old crack's end would
+  // meet the new sheet at a corner inside the tissue, and a coarse tet
+  // around that corner, its vertices sided by the nearer of two planes,
+  // would hold both sheets on one edge (a pinch at a resolution between the
+  // finest and the coarsest). The two cracks cross: the ended polygon goes on past the
   // turn's edge, and the next part's polygons start behind it, each by
   // kCrossingReach of how far past the edge the tets reach that it passes
   // through (every resolution), so the tissue a sharp turn goes round comes

@@ -262,8 +262,8 @@ INSTANTIATE_TEST_SUITE_P(Shards, StrokeCutterRandom, ::testing::Range(0, kShards
 
 // Random corner cuts on the convex builtin shapes: two legs through the
 // whole depth, from outside to a point inside and out again, turning
-// sharply there (60 to 165 degrees, either way: V's too), in 20 to 80 steps and all
-// in one step: valid after every step, and the corner comes off (two
+// sharply there (60 to 165 degrees, either way: V's too), in 20 to 80
+// steps and all in one step: valid after every step, and the corner comes off (two
 // pieces) with no cut refused, as the two cracks cross where the stroke
 // turned, in all but at most one stroke in 20 (a bridge of tets both
 // cracks cut partially, a stub that cuts off a third piece:
