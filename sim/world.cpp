@@ -215,10 +215,22 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   auto result = cutter_.run(mt_, bvh_, frontier_, budget);
   cut::follow_cut(mt_, frontier_, result.changes);
   cut_vertices_ += result.changes.made_vertices.size();
-  if (result.refused) {  // the cut would have broken the MT (cut_guard.h): taken back
+  while (result.refused) {  // the cut would have broken the MT (cut_guard.h): taken back
     cut::follow_retraction(mt_, frontier_, *result.refused);
     cut_vertices_ -= result.refused_reported_vertices;
     ++m.cuts_refused;
+    result.refused.reset();
+    // A refusal ends the cutter's call: what it queued behind (a part's
+    // last front again, TimeCriticalCutter) runs now.
+    if (!cutter_.frozen()) break;
+    auto more = cutter_.run(mt_, bvh_, frontier_, budget);
+    cut::follow_cut(mt_, frontier_, more.changes);
+    cut_vertices_ += more.changes.made_vertices.size();
+    result.changes.append(more.changes);
+    result.cuts_finished += more.cuts_finished;
+    if (more.pieces) result.pieces = std::move(more.pieces);
+    result.refused = std::move(more.refused);
+    result.refused_reported_vertices = more.refused_reported_vertices;
   }
   if (!strokes_.empty() && !strokes_.back().finished) {
     StrokeRecord& stroke = strokes_.back();

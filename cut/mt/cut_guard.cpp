@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "absl/container/flat_hash_map.h"
 #include "cut/mt/time_critical_cutter.h"
 #include "engine/predicates.h"
 #include "engine/tet_adjacency.h"
@@ -19,8 +18,12 @@ using engine::Mt;
 using engine::VertId;
 
 // The live tets around each vertex of the checked edges, at every
-// resolution: one query per vertex, where a box query per edge and
-// resolution cost nine in ten of a turning stroke's steps.
+// resolution. A vertex the cut made (from `first_new_vertex` on) is used by
+// the cut's pieces only, so its star comes from them (one pass over them);
+// an older one's from the index, one query per vertex: a box query per
+// edge and resolution cost nine in ten of a turning stroke's steps, and a
+// query per vertex still four in ten where a part's front meets an older
+// crack.
 struct Stars {
   std::vector<std::int32_t> vertices;  // sorted
   std::vector<std::uint32_t> first;    // (vertices + 1) offsets into tets
@@ -32,15 +35,25 @@ struct Stars {
   }
 };
 
-Stars stars_of(const Mt& mt, const engine::TetBvh& bvh, std::vector<std::int32_t> vertices) {
+Stars stars_of(const Mt& mt, const engine::TetBvh& bvh, std::span<const MtChangeReport* const> cuts,
+               std::size_t first_new_vertex, std::vector<std::int32_t> vertices) {
   Stars out;
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   out.vertices = std::move(vertices);
-  out.first.reserve(out.vertices.size() + 1);
-  for (const std::int32_t value : out.vertices) {
-    out.first.push_back(static_cast<std::uint32_t>(out.tets.size()));
-    const VertId v(value);
+  std::vector<std::pair<std::int32_t, TetId>> around;  // (vertex, tet)
+  const auto first_new = std::lower_bound(out.vertices.begin(), out.vertices.end(),
+                                          static_cast<std::int32_t>(first_new_vertex));
+  if (first_new != out.vertices.end())
+    for (const MtChangeReport* cut : cuts)
+      for (TetId t : cut->made_tets) {
+        if (!mt.alive(t)) continue;
+        for (VertId v : mt.tet(t))
+          if (v.value >= *first_new && std::binary_search(first_new, out.vertices.end(), v.value))
+            around.emplace_back(v.value, t);
+      }
+  for (auto it = out.vertices.begin(); it != first_new; ++it) {
+    const VertId v(*it);
     // A box query at the point, not for_each_containing: a tet's own corner
     // is a degenerate case for its exact inside test, and every tet here has v
     // as a corner.
@@ -49,14 +62,25 @@ Stars stars_of(const Mt& mt, const engine::TetBvh& bvh, std::vector<std::int32_t
     bvh.for_each_overlapping(mt, at, [&](TetId t) {
       if (!mt.alive(t)) return true;
       const engine::Tet& corners = mt.tet(t);
-      if (std::find(corners.begin(), corners.end(), v) == corners.end()) return true;
-      out.tets.push_back(t);
-      out.levels.push_back(
-          static_cast<std::uint8_t>((mt.birth(t) == mt.root() ? 1 : 0) | (mt.death(t) == mt.drain() ? 2 : 0)));
+      if (std::find(corners.begin(), corners.end(), v) != corners.end()) around.emplace_back(v.value, t);
       return true;
     });
   }
-  out.first.push_back(static_cast<std::uint32_t>(out.tets.size()));
+  std::sort(around.begin(), around.end());
+  out.first.assign(out.vertices.size() + 1, 0);
+  out.tets.reserve(around.size());
+  out.levels.reserve(around.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < out.vertices.size(); ++i) {
+    out.first[i] = static_cast<std::uint32_t>(out.tets.size());
+    for (; k < around.size() && around[k].first == out.vertices[i]; ++k) {
+      const TetId t = around[k].second;
+      out.tets.push_back(t);
+      out.levels.push_back(
+          static_cast<std::uint8_t>((mt.birth(t) == mt.root() ? 1 : 0) | (mt.death(t) == mt.drain() ? 2 : 0)));
+    }
+  }
+  out.first.back() = static_cast<std::uint32_t>(out.tets.size());
   return out;
 }
 
@@ -117,72 +141,11 @@ FragId pinching_fragment(const Mt& mt, const Stars& stars, VertId a, VertId b,
   return FragId();
 }
 
-// fragments_out_of_balance, with the cut's decomposed fragments (sorted)
-// given: the sum, per fragment, of its changed tets' unmasked faces with
-// their orientation's sign (+ pieces, - killed tets; created side minus
-// replaced).
-std::vector<FragId> out_of_balance(const Mt& mt, const MtChangeReport& cut, std::span<const FragId> skip) {
-  // (fragment, the face's ascending ids) -> coefficient
-  absl::flat_hash_map<std::array<std::int32_t, 4>, int> sums;
-  sums.reserve(16 * cut.replaced.size());
-  const auto add = [&](const engine::Tet& v, engine::FaceMask mask, FragId birth, FragId death, int sign) {
-    for (int f = 0; f < 4; ++f) {
-      if (mask & (1u << f)) continue;
-      const std::array<VertId, 3> outward = engine::face_vertices(v, f);
-      std::array<std::int32_t, 4> key{0, outward[0].value, outward[1].value, outward[2].value};
-      // The orientation's sign: the parity of the sort.
-      int parity = 1;
-      for (int i = 1; i < 4; ++i)
-        for (int j = 1; j < 4 - i; ++j)
-          if (key[j] > key[j + 1]) {
-            std::swap(key[j], key[j + 1]);
-            parity = -parity;
-          }
-      for (const auto& [fragment, side] : {std::pair{birth, 1}, std::pair{death, -1}})
-        if (fragment.valid() && fragment != mt.root() && fragment != mt.drain() &&
-            !std::binary_search(skip.begin(), skip.end(), fragment)) {
-          key[0] = fragment.value;
-          sums[key] += sign * side * parity;
-        }
-    }
-  };
-  for (const TetReplacement& r : cut.replaced) {
-    // A killed tet's fragments are the replacement's; its pieces were born
-    // and died in the same ones (only a decomposition, skipped, moves them).
-    add(mt.tet(r.old), mt.boundary_mask(r.old), r.birth, r.death, -1);
-    for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {
-      const TetId t = cut.made_tets[i];
-      add(mt.tet(t), mt.boundary_mask(t), r.birth, r.death, 1);
-    }
-  }
-  std::vector<FragId> out;
-  for (const auto& [key, sum] : sums)
-    if (sum != 0) out.push_back(FragId(key[0]));
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
 }  // namespace
-
-std::vector<FragId> decomposed_fragments(const MtChangeReport& cut) {
-  std::vector<FragId> out;
-  for (const FragmentSplit& s : cut.fragment_splits) {
-    out.push_back(s.old);
-    out.insert(out.end(), s.parts.begin(), s.parts.end());
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
-std::vector<FragId> fragments_out_of_balance(const Mt& mt, const MtChangeReport& cut) {
-  return out_of_balance(mt, cut, decomposed_fragments(cut));
-}
 
 engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
                                    std::size_t first_cut_vertex, std::size_t first_new_vertex, const PartRecord* part,
-                                   bool fragments_valid) {
+                                   CutSelect select, const FrameCommit* commit) {
   engine::ValidationReport report;
   const auto earlier = [&](VertId v) {
     return v.index() >= first_cut_vertex && v.index() < first_new_vertex && !(part && part->made(v));
@@ -195,47 +158,58 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
       if (both(v[e[0]]) && both(v[e[1]]))
         edges.emplace_back(std::min(v[e[0]].value, v[e[1]].value), std::max(v[e[0]].value, v[e[1]].value));
   };
-  for (const TetReplacement& r : cut.replaced) {
-    // A piece of an earlier cut split again: the new crack meets the old
-    // one here, and any edge between cut vertices may be pinched.
-    const bool meets_old_crack = mt.error_inherited(r.old);
+  // A piece of an earlier cut split again: the new crack meets the old one
+  // there, and any edge between cut vertices may be pinched. A part's
+  // commit leaves the tets its polygon's outline passes through whole, so
+  // around the edges of its pieces the surface is checked with its
+  // front's (the frame's commit, `commit`), when every tet there is split.
+  const auto add_edges_of = [&](const MtChangeReport& changes) {
+    for (const TetReplacement& r : changes.replaced)
+      for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {
+        const TetId t = changes.made_tets[i];
+        if (!mt.alive(t)) continue;
+        if (mt.error_inherited(r.old)) {
+          add_edges(mt.tet(t), by_cuts);
+        } else {
+          add_edges(mt.tet(t), earlier);
+        }
+      }
+  };
+  for (const TetReplacement& r : cut.replaced)
     for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {
       const TetId t = cut.made_tets[i];
       if (!mt.alive(t)) continue;
       const auto c = mt.corners(t);
       if (engine::orient3d_sign(c[0], c[1], c[2], c[3]) <= 0)
         report.add("cut: piece " + std::to_string(t.value) + " is not positively oriented");
-      if (meets_old_crack) {
-        add_edges(mt.tet(t), by_cuts);
-      } else {
-        add_edges(mt.tet(t), earlier);
-      }
     }
-  }
+  if (select != CutSelect::kComplete) add_edges_of(cut);
+  if (commit) add_edges_of(*commit->changes);
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   // Every fragment the cut changed still replaces the same region: where
   // the new crack meets an old one it may bend differently in a fragment's
-  // two tessellations. When every fragment was valid before the cut, a
-  // fragment it did not decompose is checked by what it changed there
-  // (fragments_out_of_balance). A part's commits leave fragments invalid
-  // until its front or end is cut (a commit splits the finer tets of a
-  // fragment that the polygon crosses completely, the coarser ones only
-  // the front or the end do: part_record.h). So there, and where the cut
-  // decomposed a fragment (its parts did not exist before), the fragments
-  // where the new crack meets an old one (they hold a piece of an earlier
-  // cut that this one split or relabelled) are checked whole, with their
-  // parts.
+  // two tessellations. A fragment the cut did not decompose is checked by
+  // what the cut changed there, with what the part's commits owe it
+  // (fragment_ledger.h). The fragments where the new crack meets an old one
+  // (they hold a piece of an earlier cut that this one split or
+  // relabelled) and that the cut decomposed (their parts did not exist
+  // before) are checked whole, with their parts. A part's commit leaves
+  // its fragments, and the parts of those it decomposed, owing what its
+  // front splits (the ledger enters the parts by what their tets sum to),
+  // so its front's check is theirs.
   const std::vector<FragId> decomposed = decomposed_fragments(cut);
-  if (fragments_valid)
-    for (FragId f : out_of_balance(mt, cut, decomposed))
+  if (select != CutSelect::kComplete) {
+    static const FragmentLedger kNothingOwed;
+    const FragmentLedger& owed = part ? part->owed() : kNothingOwed;
+    for (FragId f : owed.unbalanced_with(mt, cut, decomposed))
       report.add("cut: fragment " + std::to_string(f.value) +
                  ": its tets do not fill the region of the tets it replaces");
+  }
   for (const TetReplacement& r : cut.replaced) {
-    if (!mt.error_inherited(r.old) && r.count != 1) continue;
+    if (select == CutSelect::kComplete || (!mt.error_inherited(r.old) && r.count != 1)) continue;
     for (FragId f : {r.birth, r.death})
-      if (f.valid() && f != mt.root() && f != mt.drain() &&
-          (!fragments_valid || std::binary_search(decomposed.begin(), decomposed.end(), f)))
+      if (f.valid() && f != mt.root() && f != mt.drain() && std::binary_search(decomposed.begin(), decomposed.end(), f))
         fragments.push_back(f);
   }
   fragments = map_fragment_set(fragments, cut.fragment_splits);
@@ -245,8 +219,16 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   std::vector<std::pair<std::int32_t, int>> faces;
   std::vector<std::int32_t> ends;
   ends.reserve(2 * edges.size());
-  for (const auto& [a, b] : edges) ends.push_back(a);  // the star of a holds every tet of the edge
-  const Stars stars = stars_of(mt, bvh, std::move(ends));
+  // The star of either end holds every tet of the edge: the end the cut
+  // made, if one is, costs no query.
+  const std::size_t first_made_here = commit ? std::min(commit->first_new_vertex, first_new_vertex) : first_new_vertex;
+  const auto made_here = [&](std::int32_t v) { return static_cast<std::size_t>(v) >= first_made_here; };
+  for (auto& [a, b] : edges)
+    if (made_here(b) && !made_here(a)) std::swap(a, b);
+  for (const auto& [a, b] : edges) ends.push_back(a);
+  std::vector<const MtChangeReport*> made{&cut};
+  if (commit) made.push_back(commit->changes);
+  const Stars stars = stars_of(mt, bvh, made, first_made_here, std::move(ends));
   for (const auto& [a, b] : edges) {
     for (const auto& [name, boundary] :
          {std::pair<const char*, int>{"finest", boundary_faces_around(mt, stars, VertId(a), VertId(b), 1, thirds)},

@@ -15,13 +15,14 @@
 // What is checked: fragments still replace a region by the same region
 // (engine validate_fragment: where the new crack meets an old one the cut
 // may bend differently in a fragment's two tessellations; a random stroke
-// of two legs through a cylinder did so). When every fragment was valid
-// before the cut, each fragment it changed and did not decompose is checked
-// from what the cut changed in it (fragments_out_of_balance); the
+// of two legs through a cylinder did so). Each fragment the cut changed
+// and did not decompose is checked from what the cut changed in it, with
+// what the part's commits owe it (fragment_ledger.h: every fragment was
+// valid before the part's first cut; a part's commit leaves the fragments
+// owing what its front splits, and the front's check pays it back); the
 // fragments where the new crack meets an old one (they hold a piece of an
 // earlier cut that this one split or relabelled) are checked whole, with
-// their parts, when the cut decomposed them or when not every fragment was
-// valid before it (around a part's commits, part_record.h);
+// their parts, when the cut decomposed them;
 // and at the finest and coarsest resolutions (those validate() checks
 // whole): every piece the cut made is positively oriented (exact),
 // and around every edge of a piece whose two ends cuts made, the faces
@@ -40,6 +41,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "cut/mt/fragment_ledger.h"
 #include "cut/mt/mt_change_report.h"
 #include "cut/mt/part_record.h"
 #include "engine/mt/mt.h"
@@ -48,35 +50,24 @@
 
 namespace mtcut::cut {
 
-// The fragments a cut decomposed, and their parts (sorted).
-std::vector<engine::FragId> decomposed_fragments(const MtChangeReport& cut);
-
-// The fragments (not root or drain, none the cut decomposed; sorted) whose
-// two tessellations the cut changed unequally. A fragment is valid when the
-// inner faces (not on the object's boundary) of the tets it creates and of
-// those it replaces are the same oriented faces (engine validate_fragment).
-// As a chain, the inner faces of a valid tet set are the sum of its tets'
-// unmasked oriented faces (a face two tets share cancels), which is linear
-// in the tets: a fragment valid before the cut stays valid exactly when,
-// summed over the cut's replacements in it, the pieces' faces minus the
-// killed tet's are the same on its created side as on its replaced side.
-// That costs the tets the cut changed, where validate_fragment costs the
-// fragment's (80,000 tets, 60 ms, for the fragments a turning stroke's
-// junction touches in the liver). Its volume check needs nothing more: a
-// split or relabel keeps its tet's volume.
-std::vector<engine::FragId> fragments_out_of_balance(const engine::Mt& mt, const MtChangeReport& cut);
+// A part's commit of the frame whose front is checked: the edges of its
+// pieces are checked with the front's (check_cut), as it is kept before
+// them with only its pieces' orientation checked.
+struct FrameCommit {
+  const MtChangeReport* changes = nullptr;
+  std::size_t first_new_vertex = 0;  // its own vertices from here on
+};
 
 // `cut`: everything the finished cut changed; vertices from `first_cut_vertex`
 // on were made by cuts (earlier ones and this), the cut's own from
 // `first_new_vertex` on. `part`: the cut is a frame of a stroke's part cut
 // progressively (part_record.h), whose committed points are of the same
-// planar crack as this cut's, not an earlier crack. `fragments_valid`:
-// every fragment was valid when the cut started and must be when it ends
-// (not so around a part's commits: part_record.h), so the fragments it
-// changed are checked by what it changed (fragments_out_of_balance). Empty
-// when the cut may be kept.
+// planar crack as this cut's, not an earlier crack, and whose commits owe
+// the fragments what the ledger holds; `select`: which of the part's cuts
+// (a commit's fragments and edges are checked by the front after it, given
+// `commit`). Empty when the cut may be kept.
 engine::ValidationReport check_cut(const engine::Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
                                    std::size_t first_cut_vertex, std::size_t first_new_vertex,
-                                   const PartRecord* part, bool fragments_valid);
+                                   const PartRecord* part, CutSelect select, const FrameCommit* commit = nullptr);
 
 }  // namespace mtcut::cut

@@ -1,5 +1,7 @@
 #include "cut/mt/mt_change_report.h"
 
+#include <algorithm>
+
 namespace mtcut::cut {
 
 void MtCutCounts::add(const MtCutCounts& o) {
@@ -27,6 +29,14 @@ void MtChangeReport::append(const MtChangeReport& later) {
   fragment_splits.insert(fragment_splits.end(), later.fragment_splits.begin(), later.fragment_splits.end());
   processed.insert(processed.end(), later.processed.begin(), later.processed.end());
   counts.add(later.counts);
+}
+
+void MtChangeReport::truncate(const Length& to) {
+  replaced.resize(std::min(replaced.size(), to.replaced));
+  made_tets.resize(std::min(made_tets.size(), to.made_tets));
+  made_vertices.resize(std::min(made_vertices.size(), to.made_vertices));
+  fragment_splits.resize(std::min(fragment_splits.size(), to.fragment_splits));
+  processed.resize(std::min(processed.size(), to.processed));
 }
 
 void MtChangeReport::renumber(const engine::Mt::Compaction& compaction) {

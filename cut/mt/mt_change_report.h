@@ -82,6 +82,16 @@ struct MtChangeReport {
   // (Mt::compact); fragments keep their ids.
   void renumber(const engine::Mt::Compaction& compaction);
   bool empty() const { return replaced.empty() && fragment_splits.empty(); }
+  // How much the report holds, to cut it back to: what a cut appended is
+  // dropped when the cut is taken back before anyone read it (the counts,
+  // the work done, stay).
+  struct Length {
+    std::size_t replaced = 0, made_tets = 0, made_vertices = 0, fragment_splits = 0, processed = 0;
+  };
+  Length length() const {
+    return {replaced.size(), made_tets.size(), made_vertices.size(), fragment_splits.size(), processed.size()};
+  }
+  void truncate(const Length& to);
 };
 
 }  // namespace mtcut::cut

@@ -213,7 +213,6 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
           std::any_of(tet.begin(), tet.end(), [&](VertId v) { return splits(v); });
       if (!on_split_vertex || positive[i]) continue;
     }
-    meets_old_crack_ = meets_old_crack_ || mt.error_inherited(p.tet);
     const bool complete = p.split && crossed_completely(configs[i]);
     crossed_partially_ += p.split && !complete;
     if (def.select != CutSelect::kAll && (def.select == CutSelect::kComplete) != complete) {

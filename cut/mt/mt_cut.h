@@ -133,9 +133,6 @@ class MtCut {
   // passes through them, or a vertex lies on its plane), whatever
   // `select`: the crack's front in the tissue.
   std::size_t tets_crossed_partially() const { return crossed_partially_; }
-  // Some tet found to change is a piece of an earlier cut (the polygon meets
-  // an old crack there).
-  bool meets_old_crack() const { return meets_old_crack_; }
   // The box of the tets left whole (in the cut's geometry; empty when none).
   const engine::Aabb& left_whole_box() const { return left_whole_box_; }
   // Every tet the search found that the polygon may cut, ascending
@@ -218,7 +215,6 @@ class MtCut {
   std::size_t crossed_partially_ = 0;
   engine::Aabb left_whole_box_;
   std::vector<TetId> candidates_;
-  bool meets_old_crack_ = false;
   std::vector<FragId> jobs_;
   std::vector<std::uint32_t> job_first_;  // (jobs + 1) offsets into job_tets_
   std::vector<std::int32_t> job_tets_;    // pending tets each job's fragment creates

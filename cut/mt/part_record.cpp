@@ -16,6 +16,22 @@ void PartRecord::add(const Mt& mt, const MtChangeReport& commit) {
     points_.emplace(made.key, made.id);
     made_[made.id.index()] = 1;
   }
+  owed_.add(mt, commit);
+}
+
+void PartRecord::take_back(const MtChangeReport& commit, FragmentLedger owed, std::optional<engine::Aabb> front) {
+  for (TetId t : commit.made_tets)
+    if (t.index() < owned_.size() && owned_[t.index()]) {
+      owned_[t.index()] = 0;
+      --num_owned_;
+    }
+  for (const MadeVertex& made : commit.made_vertices)
+    if (made.id.index() < made_.size() && made_[made.id.index()]) {
+      points_.erase(made.key);
+      made_[made.id.index()] = 0;
+    }
+  owed_ = std::move(owed);
+  front_ = std::move(front);
 }
 
 std::vector<MadeVertex> PartRecord::committed_points() const {
@@ -49,9 +65,10 @@ void PartRecord::renumber(const Mt::Compaction& compaction) {
     points.emplace(key, compaction.vertex(v));
   }
   points_ = std::move(points);
+  owed_.renumber(compaction);
 }
 
-engine::ValidationReport PartRecord::validate(const Mt& mt) const {
+engine::ValidationReport PartRecord::validate(const Mt& mt, const MtChangeReport* since) const {
   engine::ValidationReport report;
   std::size_t owned = 0;
   std::vector<std::uint8_t> used(mt.num_vertices(), 0);
@@ -74,6 +91,7 @@ engine::ValidationReport PartRecord::validate(const Mt& mt) const {
   }
   for (std::uint8_t m : made_) made += m;
   if (made != points_.size()) report.add("part record: committed points miscounted");
+  for (auto& p : owed_.validate(mt, since).problems) report.add("part record: " + p);
   return report;
 }
 

@@ -34,6 +34,7 @@
 
 #include "absl/container/flat_hash_map.h"
 #include "cut/cut_polygon.h"
+#include "cut/mt/fragment_ledger.h"
 #include "cut/mt/mt_change_report.h"
 #include "engine/mt/bvh.h"
 #include "engine/mt/mt.h"
@@ -78,23 +79,29 @@ class PartRecord {
   const std::optional<engine::Aabb>& front() const { return front_; }
   void set_front(std::optional<engine::Aabb> box) { front_ = std::move(box); }
 
-  // Whether the part still commits. It stops for good where its polygon
-  // meets an earlier crack (a turn's junction, an older stroke): there the
-  // cutter's guard checks the fragments the crossing touches whole, and a
-  // commit leaves a fragment whose finer tets it split out of balance until
-  // the front splits the coarser ones (cut_guard.h), so the guard would
-  // refuse it. Each frame then cuts all the part crosses beyond what it
-  // committed provisionally, as one transaction, until the part ends.
-  bool committing() const { return committing_; }
-  void stop_committing() { committing_ = false; }
+  // What the commits owe the fragments (fragment_ledger.h): a commit
+  // splits the finer tets of a fragment its polygon crosses completely, and
+  // only the front or the end the coarser ones the outline passes through.
+  // The cutter's guard checks the front and the end against it, so a part
+  // commits where its polygon meets an earlier crack (a turn's junction, an
+  // older stroke) as it does anywhere else.
+  const FragmentLedger& owed() const { return owed_; }
 
-  // A committed cut finished (and was kept): its pieces and points join.
+  // A committed cut finished (and was kept): its pieces and points join,
+  // and what it owes the fragments.
   void add(const Mt& mt, const MtChangeReport& commit);
+  // A kept commit taken back (its frame refused, the commit retracted):
+  // its pieces and points leave, and the ledger and the front are again
+  // `owed` and `front`, as they were before it.
+  void take_back(const MtChangeReport& commit, FragmentLedger owed, std::optional<engine::Aabb> front);
   // The MT was compacted (Mt::compact): ids follow.
   void renumber(const Mt::Compaction& compaction);
 
-  // Every owned tet is alive, every point a vertex some owned tet uses.
-  engine::ValidationReport validate(const Mt& mt) const;
+  // Every owned tet is alive, every point a vertex some owned tet uses;
+  // the ledger holds what the fragments it names are out of balance by,
+  // with `since` (the changes made after the last commit: the part's held
+  // front, or its cut in progress; may be null).
+  engine::ValidationReport validate(const Mt& mt, const MtChangeReport* since = nullptr) const;
 
  private:
   CutPolygon plane_;
@@ -102,7 +109,7 @@ class PartRecord {
   std::size_t num_owned_ = 0;
   std::vector<std::uint8_t> made_;   // (vertices) 1: a committed point
   std::optional<engine::Aabb> front_;
-  bool committing_ = true;
+  FragmentLedger owed_;
   absl::flat_hash_map<PointKey, VertId, PointKeyHash> points_;
 };
 

@@ -170,9 +170,10 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
   if (pivot_) polygon = pivoted(*pivot_, current->corners());
   if (!polygon && crossing_) polygon = past(*current, *crossing_);
   if (!polygon) polygon = *current;
-  // A part going on from the last one's crack meets it, so it would not
-  // commit (part_record.h): it is cut whole each frame, pivoting about the
-  // edge as the blade goes on, until it ends.
+  // A part going on from the last one's crack across a gentle turn
+  // continues it (stroke_crack.h), which only a cut of its whole polygon
+  // does: it is cut whole each frame, pivoting about the edge as the blade
+  // goes on, until it ends.
   if (plane_fixed && !pivot_) {
     part_ = Part{std::make_shared<PartRecord>(*polygon), *polygon};
     submit_part(*part_);
@@ -293,17 +294,12 @@ void TimeCriticalCutter::submit_ended(const CutPolygon& polygon, std::shared_ptr
 
 void TimeCriticalCutter::submit_part(const Part& part, std::optional<CutPolygon> grown_from) {
   if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
-  if (part.record->committing()) {
-    queue_.push_back({.polygon = part.last,
-                      .record = part.record,
-                      .select = CutSelect::kComplete,
-                      .grown_from = std::move(grown_from),
-                      .stroke = true});
-  }
-  queue_provisional({.polygon = part.last,
-                     .record = part.record,
-                     .select = part.record->committing() ? CutSelect::kFront : CutSelect::kAll,
-                     .stroke = true});
+  queue_.push_back({.polygon = part.last,
+                    .record = part.record,
+                    .select = CutSelect::kComplete,
+                    .grown_from = std::move(grown_from),
+                    .stroke = true});
+  queue_provisional({.polygon = part.last, .record = part.record, .select = CutSelect::kFront, .stroke = true});
 }
 
 void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {
@@ -324,15 +320,6 @@ void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {
 void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& frontier) {
   Queued q = std::move(queue_.front());
   queue_.pop_front();
-  // A part that stopped committing cuts its front and the rest as one.
-  if (q.record && !q.record->committing() && q.select != CutSelect::kAll) {
-    if (q.select == CutSelect::kComplete) {  // its front follows it in the queue
-      if (queue_.empty()) throw std::logic_error("TimeCriticalCutter: a part's commit queued without its front");
-      q = std::move(queue_.front());
-      queue_.pop_front();
-    }
-    q.select = CutSelect::kAll;
-  }
   bvh.refresh(mt);  // between two cuts: the index edits of the last one never rebuild mid-cut
   Active a;
   a.provisional = q.provisional;
@@ -364,8 +351,8 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
     def.candidates = &searched->tets;
   // A polygon of the stroke continues its crack where it starts on it, and
   // makes its front exactly on the edge the next one starts on.
-  // (A part's commit and front have no junction: a part that meets an
-  // older crack stops committing, below, and cuts all it crosses as one.)
+  // (A part's commit and front have no junction: a part that goes on from
+  // the last one's crack is cut whole, recut().)
   std::optional<CutContinuation> continuation;
   if (q.stroke && q.select == CutSelect::kAll) {
     continuation = q.leading ? crack_.continuation(q.polygon, (*q.leading)[0], (*q.leading)[1])
@@ -374,15 +361,10 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
     if (!q.provisional) a.crack_polygon = q.polygon;
   }
   a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def, table_, &workspace_);
-  if (a.record && a.select == CutSelect::kComplete && a.cut->meets_old_crack()) {
-    // Nothing done yet: the part stops committing, and its provisional cut
-    // (queued next) takes everything it crosses beyond its commits.
-    a.record->stop_committing();
-    a.cut.reset();
-    start_next(mt, bvh, frontier);
-    return;
+  if (a.record && a.select == CutSelect::kComplete) {
+    frame_ = Frame{.record = a.record.get(), .previous = q.grown_from, .front = a.record->front(), .owed = a.record->owed()};
+    a.record->set_front(a.cut->left_whole_box());
   }
-  if (a.record && a.select == CutSelect::kComplete) a.record->set_front(a.cut->left_whole_box());
   const auto jobs = a.cut->jobs();
   for (std::size_t j = 0; j < jobs.size(); ++j)
     if (frontier.is_visible(jobs[j])) a.order.push_back(j);
@@ -395,6 +377,7 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
 TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const Frontier& frontier,
                                                       const CutBudget& budget) {
   const auto start = Clock::now();
+  ++calls_;
   RunResult result;
   std::size_t spent = 0, jobs = 0;
   const auto over_budget = [&] {
@@ -429,34 +412,40 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     }
     if (a.next < a.order.size()) {
       result.changes.append(call);
+      a.reported_before = true;
       break;
     }
     ++result.cuts_finished;
     ++totals_.cuts_finished;
-    // Every fragment is valid before and after a cut, except around a
-    // part's commits (part_record.h): a commit, and the front or end of a
-    // part that committed something, are checked without that premise.
-    const bool fragments_valid =
-        a.select != CutSelect::kComplete && (!a.record || a.record->num_owned() == 0);
-    const engine::ValidationReport guard = check_cut(mt, bvh, a.tx.changes, first_cut_vertex_,
-                                                     a.tx.first_new_vertex, a.record.get(), fragments_valid);
+    FrameCommit commit;  // the frame's commit, checked with its front
+    const bool with_commit = a.select == CutSelect::kFront && frame_ && frame_->record == a.record.get() &&
+                             frame_->committed && !commits_.empty();
+    if (with_commit) commit = {&commits_.back().changes, commits_.back().first_new_vertex};
+    const engine::ValidationReport guard = check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex,
+                                                     a.record.get(), a.select, with_commit ? &commit : nullptr);
     if (!guard.ok()) {
       result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &*a.tx.bvh_mark);
       result.refused_reported_vertices = a.tx.changes.made_vertices.size() - call.made_vertices.size();
       result.changes.counts.add(call.counts);
+      // A part's end refused: its commits, which owe the fragments what the
+      // end would have split, are taken back too, the last first, and the
+      // part is not cut at all (as a single cut of its polygon refused).
+      if (a.record && a.select == CutSelect::kAll && !a.provisional && commits_of_ == a.record.get()) {
+        while (!commits_.empty()) retract_last_commit(mt, bvh, result);
+        forget_commits();
+      }
+      const std::shared_ptr<PartRecord> record = a.record;
+      const CutSelect select = a.select;
+      active_.reset();  // `a` is gone from here
+      if (record && select != CutSelect::kAll) take_back_frame(mt, bvh, record, select, result);
       pieces_stale_ = pieces_stale_ || result.refused->fragments_removed > 0;
       ++refused_;
-      // A part's front is split against its committed tets: with this
-      // frame's commit refused, it waits for the next frame too.
-      if (a.record && a.select == CutSelect::kComplete) {
-        a.record->set_front(std::nullopt);  // its tets are whole again: the next frame searches them all
-        if (!queue_.empty() && queue_.front().record == a.record && queue_.front().select == CutSelect::kFront) {
-          queue_.pop_front();
-          provisional_queued_ = false;
-        }
-      }
-      active_.reset();
       break;  // the caller maps its frontier through the retraction before any later cut
+    }
+    if (a.record && a.select == CutSelect::kComplete && frame_ && frame_->record == a.record.get()) {
+      frame_->committed = true;
+      frame_->call = calls_;
+      frame_->reported_from = a.reported_before ? std::nullopt : std::optional(result.changes.length());
     }
     result.changes.append(call);
     // Pieces join finest tets through their vertices and the fragments above
@@ -464,10 +453,16 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     // a tet of every resolution (born of the root, replaced by the drain) is
     // split, which a part's commit may do alone.
     pieces_stale_ = pieces_stale_ || (a.split_every_level && a.select != CutSelect::kFront);
+    if (a.record && a.select == CutSelect::kFront) frame_.reset();  // the frame is kept
     if (a.record && a.select == CutSelect::kComplete) {
       a.record->add(mt, a.tx.changes);
       searched_ = Searched{a.record.get(), mt.instance(), mt.revision(), a.cut->candidates()};
+      if (commits_of_ != a.record.get()) forget_commits();
+      commits_of_ = a.record.get();
+      a.tx.bvh_mark.reset();  // the index's one mark is the next cut's
+      commits_.push_back(std::move(a.tx));
     }
+    if (a.record && a.select == CutSelect::kAll && !a.provisional) forget_commits();  // the part's end kept
     if (a.crack_polygon) {  // with the part's commits, everything its crack holds
       std::vector<MadeVertex> made;
       if (a.record) made = a.record->committed_points();
@@ -495,8 +490,66 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
   return result;
 }
 
+void TimeCriticalCutter::retract_last_commit(Mt& mt, TetBvh& bvh, RunResult& result) {
+  const Transaction& c = commits_.back();
+  CutRetraction more = retract_cut(mt, bvh, c.changes, c.fragments_before);
+  CutRetraction& out = *result.refused;
+  out.revived.insert(out.revived.end(), more.revived.begin(), more.revived.end());
+  out.killed.insert(out.killed.end(), more.killed.begin(), more.killed.end());
+  out.merged.insert(out.merged.end(), more.merged.begin(), more.merged.end());
+  out.fragments_removed += more.fragments_removed;
+  result.refused_reported_vertices += c.changes.made_vertices.size();  // reported when it was kept
+  commits_.pop_back();
+}
+
+void TimeCriticalCutter::take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_ptr<PartRecord>& record,
+                                         CutSelect select, RunResult& result) {
+  // A refused commit leaves its front queued behind it, to be split against it.
+  if (select == CutSelect::kComplete && !queue_.empty() && queue_.front().record == record &&
+      queue_.front().select == CutSelect::kFront) {
+    queue_.pop_front();
+    provisional_queued_ = false;
+  }
+  if (!frame_ || frame_->record != record.get()) {
+    record->set_front(std::nullopt);  // its tets may be whole: the next frame searches them all
+    return;
+  }
+  Frame frame = std::move(*frame_);
+  frame_.reset();
+  if (frame.committed && !commits_.empty()) {
+    const MtChangeReport commit = commits_.back().changes;
+    if (frame.call == calls_ && frame.reported_from) {
+      // This call reported the commit: it is dropped from the report, and
+      // the caller, which maps the report before the refusal, never sees it.
+      const Transaction& c = commits_.back();
+      retract_cut(mt, bvh, c.changes, c.fragments_before);
+      commits_.pop_back();
+      result.changes.truncate(*frame.reported_from);
+      result.pieces.reset();
+      pieces_stale_ = true;
+    } else {
+      retract_last_commit(mt, bvh, result);
+    }
+    record->take_back(commit, std::move(frame.owed), frame.front);
+  } else {
+    record->set_front(frame.front);
+  }
+  searched_.reset();
+  if (!frame.previous) return;  // the part's first frame: nothing was cut before it
+  if (part_ && part_->record.get() == record.get()) part_->last = *frame.previous;
+  // The last frame's front again: the caller runs the cutter once more
+  // after mapping the refusal (cut_stroke_step, World::step).
+  queue_provisional({.polygon = *frame.previous, .record = record, .select = CutSelect::kFront, .stroke = true});
+}
+
+void TimeCriticalCutter::forget_commits() {
+  commits_.clear();
+  commits_of_ = nullptr;
+}
+
 bool TimeCriticalCutter::reclaimable(const Mt& mt) const {
-  const std::size_t held = held_ ? held_->changes.replaced.size() : 0;  // dead, kept to revive
+  std::size_t held = held_ ? held_->changes.replaced.size() : 0;  // dead, kept to revive
+  for (const Transaction& c : commits_) held += c.changes.replaced.size();
   const std::size_t droppable = mt.num_dead_tets() - std::min(held, mt.num_dead_tets());
   return !frozen() && droppable >= kReclaimMin && droppable > mt.num_live_tets();
 }
@@ -506,16 +559,23 @@ std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh
   std::vector<TetId> keep;
   if (held_)
     for (const TetReplacement& r : held_->changes.replaced) keep.push_back(r.old);
+  for (const Transaction& c : commits_)
+    for (const TetReplacement& r : c.changes.replaced) keep.push_back(r.old);
   engine::Mt::Compaction out = mt.compact(std::min(first_cut_vertex_, mt.num_vertices()), keep);
   bvh.renumber(out);
   if (part_) part_->record->renumber(out);
   crack_.renumber(out);
   searched_.reset();
+  const auto renumber = [&](Transaction& tx) {
+    tx.changes.renumber(out);
+    std::size_t kept_before = 0;  // vertices kept below the cut's first
+    for (std::size_t v = 0; v < tx.first_new_vertex; ++v) kept_before += out.vertex_map[v] >= 0;
+    tx.first_new_vertex = kept_before;
+  };
+  for (Transaction& c : commits_) renumber(c);
+  if (frame_) frame_->owed.renumber(out);
   if (held_) {
-    held_->changes.renumber(out);
-    std::size_t kept_before = 0;  // vertices kept below the held cut's first
-    for (std::size_t v = 0; v < held_->first_new_vertex; ++v) kept_before += out.vertex_map[v] >= 0;
-    held_->first_new_vertex = kept_before;
+    renumber(*held_);
     if (!bvh.marked()) held_->bvh_mark.reset();  // the index's mark survives when it kept what the held cut removed
   }
   return out;
@@ -542,8 +602,17 @@ engine::ValidationReport TimeCriticalCutter::validate(const Mt& mt) const {
       report.add("cutter: cut in progress: " + p);
   if (provisional_queued_ && (queue_.empty() || !queue_.back().provisional))
     report.add("cutter: a provisional cut is counted as queued but the queue's last entry is not one");
-  if (part_)
-    for (auto& p : part_->record->validate(mt).problems) report.add("cutter: " + p);
+  if (part_) {
+    // What the part changed since its last commit: its cut in progress, or its held front.
+    const MtChangeReport* since = active_ && active_->record == part_->record ? &active_->tx.changes
+                                  : held_                                    ? &held_->changes
+                                                                             : nullptr;
+    for (auto& p : part_->record->validate(mt, since).problems) report.add("cutter: " + p);
+  }
+  if (!commits_.empty() && !commits_of_) report.add("cutter: commits kept for no part");
+  for (const Transaction& c : commits_)
+    for (const TetReplacement& r : c.changes.replaced)
+      if (mt.alive(r.old)) report.add("cutter: a kept commit's split tet " + std::to_string(r.old.value) + " is alive");
   for (auto& p : crack_.validate().problems) report.add("cutter: " + p);
   if (!active_) return report;
   const Active& a = *active_;

@@ -31,7 +31,13 @@
 //
 // Every cut is a transaction: when its last job is done, check_cut
 // (cut_guard.h) looks where it met older cracks, and a cut that would leave
-// the MT invalid is taken back and reported (RunResult::refused).
+// the MT invalid is taken back and reported (RunResult::refused). A part's
+// frame is one too: its commit is checked with its front (the commit owes
+// the fragments what the front splits, fragment_ledger.h), so a refused
+// front takes the frame's commit back, and a refused commit or front queues
+// the last frame's front again, which the caller runs after mapping the
+// refusal (the MT as the last frame left it); a part's end refused takes
+// all its commits back with it.
 //
 // Budgets are work units (tets split or relabelled, plus one per job: the
 // same on every machine, so runs are reproducible) and/or milliseconds;
@@ -177,7 +183,8 @@ class TimeCriticalCutter {
   // cut and `bvh` (TetBvh::renumber); the caller maps what else it holds through the
   // result (a frontier: Frontier::from_fragments over the same fragments).
   // nullopt when it did nothing. Amortised, a pass over the MT per as many
-  // dead tets as there are live ones.
+  // dead tets as there are live ones. The tets that the held cut and the
+  // kept commits of a part in progress split stay, dead, to be revived.
   static constexpr std::size_t kReclaimMin = 4096;
   bool reclaimable(const Mt& mt) const;  // reclaim() would compact now
   std::optional<engine::Mt::Compaction> reclaim(Mt& mt, TetBvh& bvh);
@@ -268,6 +275,7 @@ class TimeCriticalCutter {
     std::vector<std::size_t> order;   // jobs: visible first, then hidden, ascending within each
     std::size_t visible = 0;          // leading entries of `order` that are visible
     std::size_t next = 0;             // next entry of `order`
+    bool reported_before = false;     // an earlier call reported some of its changes
   };
   void start_next(const Mt& mt, TetBvh& bvh, const Frontier& frontier);
   void extend_geometry(std::span<const MadeVertex> made);
@@ -278,6 +286,13 @@ class TimeCriticalCutter {
   std::deque<Queued> queue_;
   std::optional<Active> active_;
   std::optional<Transaction> held_;  // the provisional cut, finished and kept until retract()
+  // The commits of the part whose end has not been kept yet (of
+  // `commits_of_`'s record), in order: a refused end takes them back too.
+  std::vector<Transaction> commits_;
+  const PartRecord* commits_of_ = nullptr;
+  void forget_commits();
+  // Retracts the last of commits_ and adds its retraction to result.refused.
+  void retract_last_commit(Mt& mt, TetBvh& bvh, RunResult& result);
   std::size_t first_cut_vertex_ = SIZE_MAX;  // the MT's vertex count when the first cut started
   bool provisional_queued_ = false;  // the queue's last entry is provisional
   std::optional<Part> part_;         // the part in progress, once its plane is fixed
@@ -290,6 +305,28 @@ class TimeCriticalCutter {
     std::vector<TetId> tets;
   };
   std::optional<Searched> searched_;
+  // The frame of the part in progress, from its commit's start to its
+  // front's end: what the record was before the commit, so that a refused
+  // commit or front takes the frame back whole (the commit retracted, the
+  // record as before it, the last frame's polygon cut again as the front:
+  // the MT as the last frame left it, up to numbering).
+  struct Frame {  // filled by designated initialisers
+    const PartRecord* record = nullptr;
+    std::optional<CutPolygon> previous{};  // the part's polygon of the last frame (none: its first)
+    std::optional<engine::Aabb> front{};   // the record's front before the commit
+    FragmentLedger owed{};                 // the record's ledger before the commit
+    bool committed = false;              // the commit was kept: the last of commits_
+    // Where the commit's changes start in the report of the call that kept
+    // it (`call`), when that call reported all of them.
+    std::optional<MtChangeReport::Length> reported_from{};
+    std::uint64_t call = 0;
+  };
+  std::uint64_t calls_ = 0;  // run() calls so far
+  std::optional<Frame> frame_;
+  // Takes the frame of `record` back after its commit or front (`select`)
+  // was refused (result.refused holds that cut's retraction).
+  void take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_ptr<PartRecord>& record, CutSelect select,
+                       RunResult& result);
   // The stroke's crack (stroke_crack.h): what its cuts for good made, so that
   // a part going on from the last across a gentle turn continues it.
   StrokeCrack crack_;

@@ -46,7 +46,7 @@ TEST(CutGuard, AFragmentIsOutOfBalanceExactlyWhereItsTessellationsDiffer) {
       ASSERT_GT(report.counts.split_tets, 0u) << where;
       EXPECT_TRUE(cut::fragments_out_of_balance(mt, report).empty()) << where;
       EXPECT_TRUE(broken_fragments(mt, report).empty()) << where;
-      EXPECT_TRUE(cut::check_cut(mt, bvh, report, first_vertex, first_vertex, nullptr, true).ok()) << where;
+      EXPECT_TRUE(cut::check_cut(mt, bvh, report, first_vertex, first_vertex, nullptr, cut::CutSelect::kAll).ok()) << where;
 
       // The first split of a tet in a fragment that is neither root, drain
       // nor decomposed: its first piece becomes the whole tet again, which
@@ -70,7 +70,7 @@ TEST(CutGuard, AFragmentIsOutOfBalanceExactlyWhereItsTessellationsDiffer) {
       std::sort(expected.begin(), expected.end());
       EXPECT_EQ(cut::fragments_out_of_balance(mt, report), expected) << where;
       EXPECT_EQ(broken_fragments(mt, report), expected) << where;
-      EXPECT_FALSE(cut::check_cut(mt, bvh, report, first_vertex, first_vertex, nullptr, true).ok()) << where;
+      EXPECT_FALSE(cut::check_cut(mt, bvh, report, first_vertex, first_vertex, nullptr, cut::CutSelect::kAll).ok()) << where;
       ++tampered;
     }
   }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <string>
 
+#include "cut/mt/fragment_ledger.h"
 #include "cut/mt/mt_pieces.h"
 #include "cut/mt/stroke_cutter.h"
 #include "tests/cut/mt/mt_cut_test_util.h"
@@ -118,6 +119,133 @@ TEST(PartRecord, AFrameResplitsOnlyTheFront) {
       }
     }
   }
+}
+
+// An L: the blade drawn along x to the middle of the box, then along y
+// (a sharp turn: the second part crosses the first one's crack), at s in
+// [0, 1], down through the box or to `depth` of its height.
+cut::BladePose l_blade_at(const engine::Aabb& box, double s, double depth) {
+  const Vec3 size = box.hi - box.lo;
+  const Vec3 start = box.center() - Vec3(0.75 * size.x(), 0.13 * size.y(), 0);
+  const Vec3 corner = box.center() + Vec3(0.07 * size.x(), -0.13 * size.y(), 0);
+  const Vec3 end = corner + Vec3(0, 0.8 * size.y(), 0);
+  const Vec3 foot = s < 0.5 ? start + (corner - start) * (2 * s) : corner + (end - corner) * (2 * s - 1);
+  return {Vec3(foot.x(), foot.y(), box.hi.z() + 0.05 * size.z()), Vec3(foot.x(), foot.y(), box.hi.z() - depth * size.z()),
+          true};
+}
+
+// The part after a sharp turn meets the first part's crack, and still
+// commits what it crosses completely, the pieces of that crack among them:
+// what its commits owe the fragments there (the first crack's tets are
+// split at every resolution around the junction) is in the record's ledger
+// (fragment_ledger.h), and each frame's front pays it back exactly, where
+// without the ledger the front alone leaves fragments out of balance. So
+// the second part's frames re-split only its front, as a straight part's
+// do, and the L ends in the same pieces as cut at once. MT, BVH, frontier
+// and cutter (the record and its ledger) are validated after every frame.
+TEST(PartRecord, APartAfterASharpTurnCommitsWhereItMeetsTheFirstCrack) {
+  for (const std::string name : {"ellipsoid", "liver", "box"}) {
+    const Mt& original = cut_test_mt(name);
+    for (const double depth : {0.6, 1.1}) {
+      for (const int steps : {60, 200}) {
+        const std::string where = name + " L, depth " + std::to_string(depth) + ", " + std::to_string(steps) + " steps";
+        Mt mt = original;
+        engine::TetBvh bvh(mt);
+        Frontier frontier = Frontier::coarsest(mt);
+        cut::StrokeSweep stroke;
+        cut::TimeCriticalCutter cutter;
+        const engine::Aabb box = mt_box(mt);
+        std::size_t committed = 0, most_front = 0, owing_fronts = 0, frames = 0;
+        bool valid = true;
+        for (int k = 0; k <= steps + 1 && valid; ++k) {
+          cut::BladePose pose = l_blade_at(box, std::min(1.0, static_cast<double>(k) / steps), depth);
+          pose.engaged = k <= steps;
+          const cut::StrokeStep step = cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, std::span(&pose, 1));
+          if (!step.recut) continue;
+          for (const auto& report : {mt.validate(), bvh.validate(mt), engine::validate_frontier(mt, frontier),
+                                     cutter.validate(mt)}) {
+            EXPECT_TRUE(report.ok()) << where << " step " << k << ": " << report.summary();
+            valid = valid && report.ok();
+          }
+          const cut::PartRecord* record = cutter.part_record();
+          const cut::MtChangeReport* front = cutter.provisional_changes();
+          if (2 * k <= steps + 2 || !record || !front) continue;  // the second part's frames
+          ++frames;
+          committed = std::max(committed, record->num_owned());
+          most_front = std::max(most_front, front->replaced.size());
+          const std::vector<engine::FragId> skip = cut::decomposed_fragments(*front);
+          EXPECT_TRUE(record->owed().unbalanced_with(mt, *front, skip).empty()) << where << " step " << k;
+          if (!record->owed().empty()) {
+            ++owing_fronts;
+            EXPECT_FALSE(cut::fragments_out_of_balance(mt, *front).empty())
+                << where << " step " << k << ": the commits owed the fragments nothing the front paid";
+          }
+        }
+        if (!valid) return;
+        EXPECT_EQ(cutter.cuts_refused(), 0u) << where;
+        EXPECT_GT(frames, 0u) << where;
+        EXPECT_GT(owing_fronts, 0u) << where << ": no commit owed the fragments anything";
+        EXPECT_GT(committed, 0u) << where << ": the part after the turn committed nothing";
+        EXPECT_LE(2 * most_front, committed) << where << ": a frame re-split " << most_front << " tets of "
+                                             << committed;
+        Mt at_once = original;
+        {
+          engine::TetBvh bvh_once(at_once);
+          Frontier frontier_once = Frontier::coarsest(at_once);
+          cut::StrokeSweep stroke_once;
+          cut::TimeCriticalCutter cutter_once;
+          std::vector<cut::BladePose> poses;
+          for (int k = 0; k <= steps; ++k) poses.push_back(l_blade_at(box, static_cast<double>(k) / steps, depth));
+          poses.push_back(poses.back());
+          poses.back().engaged = false;
+          cut::cut_stroke_step(stroke_once, cutter_once, at_once, bvh_once, frontier_once, poses);
+        }
+        EXPECT_EQ(cut::find_pieces(mt).count, cut::find_pieces(at_once).count) << where;
+        std::printf("[ report   ] %s: after the turn, front at most %zu tets, %zu committed pieces, %zu pieces\n",
+                    where.c_str(), most_front, committed, cut::find_pieces(mt).count);
+      }
+    }
+  }
+}
+
+// A commit taken back leaves the record as it was before it: no piece or
+// point of it, and the ledger and the front it had.
+TEST(PartRecord, ACommitTakenBackLeavesTheRecordAsBefore) {
+  const Mt& original = cut_test_mt("ellipsoid");
+  Mt mt = original;
+  engine::TetBvh bvh(mt);
+  const engine::Aabb box = mt_box(mt);
+  const Vec3 size = box.hi - box.lo, c = box.center();
+  // A vertical polygon from above the top to the middle of the height, half
+  // across: its outline passes through the tissue (a front stays whole).
+  const cut::CutPolygon polygon = cut::CutPolygon::from_points(
+      {Vec3(c.x() - 0.6 * size.x(), c.y() + 0.013 * size.y(), box.hi.z() + 0.1 * size.z()),
+       Vec3(c.x() + 0.1 * size.x(), c.y() + 0.017 * size.y(), box.hi.z() + 0.1 * size.z()),
+       Vec3(c.x() + 0.1 * size.x(), c.y() + 0.017 * size.y(), c.z()),
+       Vec3(c.x() - 0.6 * size.x(), c.y() + 0.013 * size.y(), c.z())});
+  cut::PartRecord record(polygon);
+  const std::optional<engine::Aabb> front_before = engine::Aabb{box.lo, box.center()};
+  record.set_front(front_before);
+  cut::CutMtOptions options;
+  options.def.record = &record;
+  options.def.select = cut::CutSelect::kComplete;
+  const cut::MtChangeReport commit = cut::cut_mt(mt, bvh, polygon, {}, options);
+  ASSERT_GT(commit.made_tets.size(), 0u);
+  record.add(mt, commit);
+  record.set_front(engine::Aabb{box.center(), box.hi});
+  ASSERT_GT(record.num_owned(), 0u);
+  ASSERT_FALSE(record.committed_points().empty());
+  ASSERT_FALSE(record.owed().empty()) << "the commit owes the fragments nothing: it tests nothing";
+  EXPECT_TRUE(record.validate(mt).ok()) << record.validate(mt).summary();
+  record.take_back(commit, cut::FragmentLedger(), front_before);
+  EXPECT_EQ(record.num_owned(), 0u);
+  EXPECT_TRUE(record.committed_points().empty());
+  EXPECT_TRUE(record.owed().empty());
+  ASSERT_TRUE(record.front().has_value());
+  EXPECT_EQ(record.front()->lo, front_before->lo);
+  EXPECT_EQ(record.front()->hi, front_before->hi);
+  for (TetId t : commit.made_tets) EXPECT_FALSE(record.owns(t));
+  for (const cut::MadeVertex& m : commit.made_vertices) EXPECT_FALSE(record.made(m.id));
 }
 
 }  // namespace
