@@ -191,7 +191,8 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   // the new crack meets an old one it may bend differently in a fragment's
   // two tessellations. A fragment the cut did not decompose is checked by
   // what the cut changed there, with what the part's commits owe it
-  // (fragment_ledger.h). The fragments where the new crack meets an old one
+  // (fragment_ledger.h; a part that has met no older crack owes nothing
+  // that needs a check, part_record.h). The fragments where the new crack meets an old one
   // (they hold a piece of an earlier cut that this one split or
   // relabelled) and that the cut decomposed (their parts did not exist
   // before) are checked whole, with their parts. A part's commit leaves
@@ -199,10 +200,12 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   // front splits (the ledger enters the parts by what their tets sum to),
   // so its front's check is theirs.
   const std::vector<FragId> decomposed = decomposed_fragments(cut);
-  if (select != CutSelect::kComplete) {
-    static const FragmentLedger kNothingOwed;
-    const FragmentLedger& owed = part ? part->owed() : kNothingOwed;
-    for (FragId f : owed.unbalanced_with(mt, cut, decomposed))
+  static const FragmentLedger kNothingOwed;
+  const FragmentLedger* owed = !part || part->num_owned() == 0 ? &kNothingOwed
+                               : part->met_old_crack()           ? &part->owed()
+                                                                 : nullptr;
+  if (select != CutSelect::kComplete && owed) {
+    for (FragId f : owed->unbalanced_with(mt, cut, decomposed))
       report.add("cut: fragment " + std::to_string(f.value) +
                  ": its tets do not fill the region of the tets it replaces");
   }

@@ -19,19 +19,22 @@ void PartRecord::add(const Mt& mt, const MtChangeReport& commit) {
   owed_.add(mt, commit);
 }
 
-void PartRecord::take_back(const MtChangeReport& commit, FragmentLedger owed, std::optional<engine::Aabb> front) {
-  for (TetId t : commit.made_tets)
-    if (t.index() < owned_.size() && owned_[t.index()]) {
-      owned_[t.index()] = 0;
-      --num_owned_;
-    }
-  for (const MadeVertex& made : commit.made_vertices)
-    if (made.id.index() < made_.size() && made_[made.id.index()]) {
-      points_.erase(made.key);
-      made_[made.id.index()] = 0;
-    }
-  owed_ = std::move(owed);
-  front_ = std::move(front);
+void PartRecord::take_back(const MtChangeReport* commit, Before before) {
+  if (commit) {
+    for (TetId t : commit->made_tets)
+      if (t.index() < owned_.size() && owned_[t.index()]) {
+        owned_[t.index()] = 0;
+        --num_owned_;
+      }
+    for (const MadeVertex& made : commit->made_vertices)
+      if (made.id.index() < made_.size() && made_[made.id.index()]) {
+        points_.erase(made.key);
+        made_[made.id.index()] = 0;
+      }
+  }
+  owed_ = std::move(before.owed);
+  met_ = before.met;
+  front_ = std::move(before.front);
 }
 
 std::vector<MadeVertex> PartRecord::committed_points() const {

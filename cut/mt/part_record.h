@@ -82,18 +82,30 @@ class PartRecord {
   // What the commits owe the fragments (fragment_ledger.h): a commit
   // splits the finer tets of a fragment its polygon crosses completely, and
   // only the front or the end the coarser ones the outline passes through.
-  // The cutter's guard checks the front and the end against it, so a part
-  // commits where its polygon meets an earlier crack (a turn's junction, an
-  // older stroke) as it does anywhere else.
+  // The cutter's guard checks the front and the end against it once the
+  // part has met an older crack (a cut of it split a piece of an earlier
+  // cut: a turn's junction, an older stroke), so a part commits there as
+  // anywhere else. Until then each of its cuts is one planar cut through
+  // tets no cut had touched, conforming by construction, and the guard
+  // skips that check (cut_guard.h).
   const FragmentLedger& owed() const { return owed_; }
+  bool met_old_crack() const { return met_; }
+  void meet_old_crack() { met_ = true; }
 
   // A committed cut finished (and was kept): its pieces and points join,
   // and what it owes the fragments.
   void add(const Mt& mt, const MtChangeReport& commit);
-  // A kept commit taken back (its frame refused, the commit retracted):
-  // its pieces and points leave, and the ledger and the front are again
-  // `owed` and `front`, as they were before it.
-  void take_back(const MtChangeReport& commit, FragmentLedger owed, std::optional<engine::Aabb> front);
+  // A frame taken back (its commit or front refused, the commit retracted
+  // if it was kept): the commit's pieces and points leave, and the ledger,
+  // whether the part had met an older crack and the front are again as
+  // they were before it.
+  struct Before {
+    FragmentLedger owed;
+    bool met = false;
+    std::optional<engine::Aabb> front;
+  };
+  Before before_commit() const { return {owed_, met_, front_}; }
+  void take_back(const MtChangeReport* commit, Before before);
   // The MT was compacted (Mt::compact): ids follow.
   void renumber(const Mt::Compaction& compaction);
 
@@ -110,6 +122,7 @@ class PartRecord {
   std::vector<std::uint8_t> made_;   // (vertices) 1: a committed point
   std::optional<engine::Aabb> front_;
   FragmentLedger owed_;
+  bool met_ = false;
   absl::flat_hash_map<PointKey, VertId, PointKeyHash> points_;
 };
 

@@ -127,7 +127,9 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     // The ended polygon starts behind the last turn's edge (crossing_ and
     // pivot_ are exclusive).
     const auto here = [&] { return crossing_ ? past(ended[i], *crossing_) : ended[i]; };
+    std::optional<CutPolygon> fallback;
     if (part_) {
+      fallback = part_->last;
       if (const std::optional<CutPolygon> on = on_part_plane(*part_, here())) part_->last = *on;
       polygon = part_->last;
       record = part_->record;
@@ -150,7 +152,8 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
         polygon = past(*polygon, Crossing{turn->a, turn->b, kCrossingReach * ahead});
       }
     }
-    submit_ended(*polygon, std::move(record), pivot_);
+    if (!record) fallback.reset();
+    submit_ended(*polygon, std::move(record), pivot_, std::move(fallback));
   }
   if (!current) {
     if (part_) submit_ended(part_->last, part_->record, std::nullopt);  // the stroke ended with nothing more to cut
@@ -285,9 +288,9 @@ std::optional<CutPolygon> TimeCriticalCutter::on_part_plane(const Part& part, co
 }
 
 void TimeCriticalCutter::submit_ended(const CutPolygon& polygon, std::shared_ptr<PartRecord> record,
-                                      const std::optional<Pivot>& next) {
+                                      const std::optional<Pivot>& next, std::optional<CutPolygon> fallback) {
   if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
-  Queued q{.polygon = polygon, .record = std::move(record), .stroke = true};
+  Queued q{.polygon = polygon, .record = std::move(record), .stroke = true, .fallback = std::move(fallback)};
   if (next) q.leading = std::array<Vec3, 2>{next->a, next->b};
   queue_.push_back(std::move(q));
 }
@@ -325,6 +328,7 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   a.provisional = q.provisional;
   a.record = std::move(q.record);
   a.select = q.select;
+  a.fallback = std::move(q.fallback);
   if (q.provisional) provisional_queued_ = false;
   first_cut_vertex_ = std::min(first_cut_vertex_, mt.num_vertices());
   a.tx = Transaction{mt.num_fragments(), mt.num_vertices(), {}, bvh.mark()};
@@ -362,7 +366,7 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   }
   a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def, table_, &workspace_);
   if (a.record && a.select == CutSelect::kComplete) {
-    frame_ = Frame{.record = a.record.get(), .previous = q.grown_from, .front = a.record->front(), .owed = a.record->owed()};
+    frame_ = Frame{.record = a.record.get(), .previous = q.grown_from, .before = a.record->before_commit()};
     a.record->set_front(a.cut->left_whole_box());
   }
   const auto jobs = a.cut->jobs();
@@ -418,9 +422,15 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     ++result.cuts_finished;
     ++totals_.cuts_finished;
     FrameCommit commit;  // the frame's commit, checked with its front
-    const bool with_commit = a.select == CutSelect::kFront && frame_ && frame_->record == a.record.get() &&
-                             frame_->committed && !commits_.empty();
-    if (with_commit) commit = {&commits_.back().changes, commits_.back().first_new_vertex};
+    const bool with_commit =
+        a.select == CutSelect::kFront && frame_ && frame_->record == a.record.get() && frame_->commit;
+    if (with_commit) commit = {&frame_->commit->changes, frame_->commit->first_new_vertex};
+    // A part whose cut splits a piece of an earlier cut meets an older
+    // crack: from here on what its commits owe is checked.
+    if (a.record && !a.record->met_old_crack() &&
+        std::any_of(a.tx.changes.replaced.begin(), a.tx.changes.replaced.end(),
+                    [&](const TetReplacement& r) { return mt.error_inherited(r.old); }))
+      a.record->meet_old_crack();
     const engine::ValidationReport guard = check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex,
                                                      a.record.get(), a.select, with_commit ? &commit : nullptr);
     if (!guard.ok()) {
@@ -430,20 +440,22 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
       // A part's end refused: its commits, which owe the fragments what the
       // end would have split, are taken back too, the last first, and the
       // part is not cut at all (as a single cut of its polygon refused).
-      if (a.record && a.select == CutSelect::kAll && !a.provisional && commits_of_ == a.record.get()) {
-        while (!commits_.empty()) retract_last_commit(mt, bvh, result);
-        forget_commits();
-      }
       const std::shared_ptr<PartRecord> record = a.record;
       const CutSelect select = a.select;
+      std::optional<CutPolygon> fallback = std::move(a.fallback);
       active_.reset();  // `a` is gone from here
       if (record && select != CutSelect::kAll) take_back_frame(mt, bvh, record, select, result);
+      // A part's end refused: its commits owe the fragments what the end
+      // splits, so the part ends where its last frame's front did, which
+      // its guard kept (the caller runs the cutter again after mapping the
+      // refusal).
+      if (record && select == CutSelect::kAll && fallback)
+        queue_.push_front({.polygon = *fallback, .record = record, .stroke = true});
       pieces_stale_ = pieces_stale_ || result.refused->fragments_removed > 0;
       ++refused_;
       break;  // the caller maps its frontier through the retraction before any later cut
     }
     if (a.record && a.select == CutSelect::kComplete && frame_ && frame_->record == a.record.get()) {
-      frame_->committed = true;
       frame_->call = calls_;
       frame_->reported_from = a.reported_before ? std::nullopt : std::optional(result.changes.length());
     }
@@ -457,12 +469,11 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     if (a.record && a.select == CutSelect::kComplete) {
       a.record->add(mt, a.tx.changes);
       searched_ = Searched{a.record.get(), mt.instance(), mt.revision(), a.cut->candidates()};
-      if (commits_of_ != a.record.get()) forget_commits();
-      commits_of_ = a.record.get();
-      a.tx.bvh_mark.reset();  // the index's one mark is the next cut's
-      commits_.push_back(std::move(a.tx));
+      if (frame_ && frame_->record == a.record.get()) {
+        a.tx.bvh_mark.reset();  // the index's one mark is the next cut's
+        frame_->commit = std::move(a.tx);
+      }
     }
-    if (a.record && a.select == CutSelect::kAll && !a.provisional) forget_commits();  // the part's end kept
     if (a.crack_polygon) {  // with the part's commits, everything its crack holds
       std::vector<MadeVertex> made;
       if (a.record) made = a.record->committed_points();
@@ -490,18 +501,6 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
   return result;
 }
 
-void TimeCriticalCutter::retract_last_commit(Mt& mt, TetBvh& bvh, RunResult& result) {
-  const Transaction& c = commits_.back();
-  CutRetraction more = retract_cut(mt, bvh, c.changes, c.fragments_before);
-  CutRetraction& out = *result.refused;
-  out.revived.insert(out.revived.end(), more.revived.begin(), more.revived.end());
-  out.killed.insert(out.killed.end(), more.killed.begin(), more.killed.end());
-  out.merged.insert(out.merged.end(), more.merged.begin(), more.merged.end());
-  out.fragments_removed += more.fragments_removed;
-  result.refused_reported_vertices += c.changes.made_vertices.size();  // reported when it was kept
-  commits_.pop_back();
-}
-
 void TimeCriticalCutter::take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_ptr<PartRecord>& record,
                                          CutSelect select, RunResult& result) {
   // A refused commit leaves its front queued behind it, to be split against it.
@@ -516,24 +515,25 @@ void TimeCriticalCutter::take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_
   }
   Frame frame = std::move(*frame_);
   frame_.reset();
-  if (frame.committed && !commits_.empty()) {
-    const MtChangeReport commit = commits_.back().changes;
+  if (frame.commit) {
+    const Transaction& c = *frame.commit;
+    CutRetraction retraction = retract_cut(mt, bvh, c.changes, c.fragments_before);
     if (frame.call == calls_ && frame.reported_from) {
       // This call reported the commit: it is dropped from the report, and
       // the caller, which maps the report before the refusal, never sees it.
-      const Transaction& c = commits_.back();
-      retract_cut(mt, bvh, c.changes, c.fragments_before);
-      commits_.pop_back();
       result.changes.truncate(*frame.reported_from);
       result.pieces.reset();
       pieces_stale_ = true;
     } else {
-      retract_last_commit(mt, bvh, result);
+      CutRetraction& out = *result.refused;
+      out.revived.insert(out.revived.end(), retraction.revived.begin(), retraction.revived.end());
+      out.killed.insert(out.killed.end(), retraction.killed.begin(), retraction.killed.end());
+      out.merged.insert(out.merged.end(), retraction.merged.begin(), retraction.merged.end());
+      out.fragments_removed += retraction.fragments_removed;
+      result.refused_reported_vertices += c.changes.made_vertices.size();  // reported when it was kept
     }
-    record->take_back(commit, std::move(frame.owed), frame.front);
-  } else {
-    record->set_front(frame.front);
   }
+  record->take_back(frame.commit ? &frame.commit->changes : nullptr, std::move(frame.before));
   searched_.reset();
   if (!frame.previous) return;  // the part's first frame: nothing was cut before it
   if (part_ && part_->record.get() == record.get()) part_->last = *frame.previous;
@@ -542,14 +542,9 @@ void TimeCriticalCutter::take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_
   queue_provisional({.polygon = *frame.previous, .record = record, .select = CutSelect::kFront, .stroke = true});
 }
 
-void TimeCriticalCutter::forget_commits() {
-  commits_.clear();
-  commits_of_ = nullptr;
-}
-
 bool TimeCriticalCutter::reclaimable(const Mt& mt) const {
   std::size_t held = held_ ? held_->changes.replaced.size() : 0;  // dead, kept to revive
-  for (const Transaction& c : commits_) held += c.changes.replaced.size();
+  if (frame_ && frame_->commit) held += frame_->commit->changes.replaced.size();
   const std::size_t droppable = mt.num_dead_tets() - std::min(held, mt.num_dead_tets());
   return !frozen() && droppable >= kReclaimMin && droppable > mt.num_live_tets();
 }
@@ -559,8 +554,8 @@ std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh
   std::vector<TetId> keep;
   if (held_)
     for (const TetReplacement& r : held_->changes.replaced) keep.push_back(r.old);
-  for (const Transaction& c : commits_)
-    for (const TetReplacement& r : c.changes.replaced) keep.push_back(r.old);
+  if (frame_ && frame_->commit)
+    for (const TetReplacement& r : frame_->commit->changes.replaced) keep.push_back(r.old);
   engine::Mt::Compaction out = mt.compact(std::min(first_cut_vertex_, mt.num_vertices()), keep);
   bvh.renumber(out);
   if (part_) part_->record->renumber(out);
@@ -572,8 +567,10 @@ std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh
     for (std::size_t v = 0; v < tx.first_new_vertex; ++v) kept_before += out.vertex_map[v] >= 0;
     tx.first_new_vertex = kept_before;
   };
-  for (Transaction& c : commits_) renumber(c);
-  if (frame_) frame_->owed.renumber(out);
+  if (frame_) {
+    if (frame_->commit) renumber(*frame_->commit);
+    frame_->before.owed.renumber(out);
+  }
   if (held_) {
     renumber(*held_);
     if (!bvh.marked()) held_->bvh_mark.reset();  // the index's mark survives when it kept what the held cut removed
@@ -609,10 +606,9 @@ engine::ValidationReport TimeCriticalCutter::validate(const Mt& mt) const {
                                                                              : nullptr;
     for (auto& p : part_->record->validate(mt, since).problems) report.add("cutter: " + p);
   }
-  if (!commits_.empty() && !commits_of_) report.add("cutter: commits kept for no part");
-  for (const Transaction& c : commits_)
-    for (const TetReplacement& r : c.changes.replaced)
-      if (mt.alive(r.old)) report.add("cutter: a kept commit's split tet " + std::to_string(r.old.value) + " is alive");
+  if (frame_ && frame_->commit)
+    for (auto& p : validate_retractable(mt, frame_->commit->changes, frame_->commit->fragments_before).problems)
+      report.add("cutter: the frame's commit: " + p);
   for (auto& p : crack_.validate().problems) report.add("cutter: " + p);
   if (!active_) return report;
   const Active& a = *active_;

@@ -36,8 +36,9 @@
 // the fragments what the front splits, fragment_ledger.h), so a refused
 // front takes the frame's commit back, and a refused commit or front queues
 // the last frame's front again, which the caller runs after mapping the
-// refusal (the MT as the last frame left it); a part's end refused takes
-// all its commits back with it.
+// refusal (the MT as the last frame left it); a part's end refused is cut
+// again with the part's polygon of its last frame, which its front's guard
+// kept (the commits owe the fragments what the end splits).
 //
 // Budgets are work units (tets split or relabelled, plus one per job: the
 // same on every machine, so runs are reproducible) and/or milliseconds;
@@ -183,8 +184,8 @@ class TimeCriticalCutter {
   // cut and `bvh` (TetBvh::renumber); the caller maps what else it holds through the
   // result (a frontier: Frontier::from_fragments over the same fragments).
   // nullopt when it did nothing. Amortised, a pass over the MT per as many
-  // dead tets as there are live ones. The tets that the held cut and the
-  // kept commits of a part in progress split stay, dead, to be revived.
+  // dead tets as there are live ones. The tets that the held cut and a
+  // frame's kept commit split stay, dead, to be revived.
   static constexpr std::size_t kReclaimMin = 4096;
   bool reclaimable(const Mt& mt) const;  // reclaim() would compact now
   std::optional<engine::Mt::Compaction> reclaim(Mt& mt, TetBvh& bvh);
@@ -212,6 +213,9 @@ class TimeCriticalCutter {
     // starts on.
     bool stroke = false;
     std::optional<std::array<Vec3, 2>> leading{};
+    // A part's end: its polygon of the last frame, cut instead should the
+    // end be refused (its commits owe the fragments what the end splits).
+    std::optional<CutPolygon> fallback{};
   };
   // Where a stroke's polygon goes on from the one before it across a gentle
   // turn: the earlier polygon's outline edge (a, b) that the next starts on,
@@ -227,8 +231,10 @@ class TimeCriticalCutter {
   };
   // Queues `q` as the provisional cut (std::logic_error while one is held).
   void queue_provisional(Queued q);
-  // Queues a stroke's polygon for good (`record`: its part's, if any).
-  void submit_ended(const CutPolygon& polygon, std::shared_ptr<PartRecord> record, const std::optional<Pivot>& next);
+  // Queues a stroke's polygon for good (`record`: its part's, if any, and
+  // `fallback` its polygon of the last frame).
+  void submit_ended(const CutPolygon& polygon, std::shared_ptr<PartRecord> record, const std::optional<Pivot>& next,
+                    std::optional<CutPolygon> fallback = std::nullopt);
   // The polygon of `corners` that starts on the pivot's edge: the hull of
   // the edge and the corners ahead of it, on the plane through the edge
   // that fits those corners best; nullopt when none lies ahead.
@@ -276,6 +282,7 @@ class TimeCriticalCutter {
     std::size_t visible = 0;          // leading entries of `order` that are visible
     std::size_t next = 0;             // next entry of `order`
     bool reported_before = false;     // an earlier call reported some of its changes
+    std::optional<CutPolygon> fallback;  // Queued::fallback
   };
   void start_next(const Mt& mt, TetBvh& bvh, const Frontier& frontier);
   void extend_geometry(std::span<const MadeVertex> made);
@@ -286,13 +293,6 @@ class TimeCriticalCutter {
   std::deque<Queued> queue_;
   std::optional<Active> active_;
   std::optional<Transaction> held_;  // the provisional cut, finished and kept until retract()
-  // The commits of the part whose end has not been kept yet (of
-  // `commits_of_`'s record), in order: a refused end takes them back too.
-  std::vector<Transaction> commits_;
-  const PartRecord* commits_of_ = nullptr;
-  void forget_commits();
-  // Retracts the last of commits_ and adds its retraction to result.refused.
-  void retract_last_commit(Mt& mt, TetBvh& bvh, RunResult& result);
   std::size_t first_cut_vertex_ = SIZE_MAX;  // the MT's vertex count when the first cut started
   bool provisional_queued_ = false;  // the queue's last entry is provisional
   std::optional<Part> part_;         // the part in progress, once its plane is fixed
@@ -313,16 +313,15 @@ class TimeCriticalCutter {
   struct Frame {  // filled by designated initialisers
     const PartRecord* record = nullptr;
     std::optional<CutPolygon> previous{};  // the part's polygon of the last frame (none: its first)
-    std::optional<engine::Aabb> front{};   // the record's front before the commit
-    FragmentLedger owed{};                 // the record's ledger before the commit
-    bool committed = false;              // the commit was kept: the last of commits_
+    PartRecord::Before before{};           // the record before the commit
+    std::optional<Transaction> commit{};   // the commit, once kept
     // Where the commit's changes start in the report of the call that kept
     // it (`call`), when that call reported all of them.
     std::optional<MtChangeReport::Length> reported_from{};
     std::uint64_t call = 0;
   };
-  std::uint64_t calls_ = 0;  // run() calls so far
   std::optional<Frame> frame_;
+  std::uint64_t calls_ = 0;  // run() calls so far
   // Takes the frame of `record` back after its commit or front (`select`)
   // was refused (result.refused holds that cut's retraction).
   void take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_ptr<PartRecord>& record, CutSelect select,

@@ -68,11 +68,7 @@ TEST_F(RunCommand, SameScenarioTwiceGivesTheSameStateHash) {
 //   build/test/mtcut run config/scenarios/default.toml --json
 // and put its state_hash here in the same commit, saying why. (x86-64 with
 // SSE2 and no FMA contraction, as Debian's g++ builds by default; the AVX2
-// copies of the spring loops give the same bits.) 287f7126302f94b0: the
-// cutter keeps a part's commits until its end is kept, to take them back
-// should the end be refused (TimeCriticalCutter), so a reclaim during the
-// stroke keeps the tets they split, dead, and numbers the MT's tets and
-// vertices otherwise. Before that, ff3f85b6ebd7e33e: a
+// copies of the spring loops give the same bits.) ff3f85b6ebd7e33e: a
 // stroke's part keeps a cut record once its plane is fixed
 // (cut/mt/part_record.h): each frame commits the tets its polygon crosses
 // completely and holds only its front provisionally, on one plane for the
@@ -109,7 +105,7 @@ TEST_F(RunCommand, SameScenarioTwiceGivesTheSameStateHash) {
 // the tets sorted by id before the build, both ways give one hash,
 // 5d8ac5d339c495b3). Before that, 4e81d327c40984f9: the volumes summed in
 // tet order (they were summed in std::sort's unspecified order of equal keys).
-constexpr const char* kDefaultScenarioGoldenHash = "287f7126302f94b0";
+constexpr const char* kDefaultScenarioGoldenHash = "ff3f85b6ebd7e33e";
 
 TEST_F(RunCommand, DefaultScenarioCutsAFlapThatSettlesOnTheFloorWithTheGoldenHash) {
   const CommandResult r = run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) + " --json --out " +
