@@ -209,6 +209,11 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
       report.add("cut: fragment " + std::to_string(f.value) +
                  ": its tets do not fill the region of the tets it replaces");
   }
+  // A fragment that owes the part's ledger and that the cut decomposed is
+  // out of the balance check above: it is checked whole.
+  if (select != CutSelect::kComplete && owed && part)
+    for (FragId f : decomposed)
+      if (owed->owes(f)) fragments.push_back(f);
   for (const TetReplacement& r : cut.replaced) {
     if (select == CutSelect::kComplete || (!mt.error_inherited(r.old) && r.count != 1)) continue;
     for (FragId f : {r.birth, r.death})

@@ -1,6 +1,7 @@
 #include "cut/mt/fragment_ledger.h"
 
 #include <algorithm>
+#include <cassert>
 #include <string>
 #include <utility>
 
@@ -118,12 +119,19 @@ std::vector<FragId> FragmentLedger::unbalanced_with(const Mt& mt, const MtChange
   return out;
 }
 
+bool FragmentLedger::owes(FragId f) const {
+  return std::any_of(sums_.begin(), sums_.end(), [&](const auto& entry) { return entry.first[0] == f.value; });
+}
+
 void FragmentLedger::renumber(const Mt::Compaction& compaction) {
   Sums sums;
   sums.reserve(sums_.size());
   for (const auto& [old_key, sum] : sums_) {
     Key key = old_key;
-    for (int i = 1; i < 4; ++i) key[i] = compaction.vertex_map[static_cast<std::size_t>(key[i])];
+    for (int i = 1; i < 4; ++i) {
+      key[i] = compaction.vertex_map[static_cast<std::size_t>(key[i])];
+      assert(key[i] >= 0 && "Mt::compact dropped a vertex of a face the ledger holds");
+    }
     sums.emplace(key, sum);
   }
   sums_ = std::move(sums);

@@ -58,6 +58,7 @@ class FragmentLedger {
   std::vector<FragId> unbalanced_with(const Mt& mt, const MtChangeReport& cut, std::span<const FragId> skip) const;
 
   bool empty() const { return sums_.empty(); }
+  bool owes(FragId f) const;  // the ledger has entries for f
   std::size_t size() const { return sums_.size(); }  // (fragment, face) entries
   // The MT was compacted (Mt::compact keeps the vertices' order, so a
   // face's sorted ids stay sorted).

@@ -134,6 +134,7 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
       polygon = part_->last;
       record = part_->record;
       part_.reset();
+      frame_.reset();  // the end takes every tet the part's frames left
     } else if (pivot_) {
       polygon = pivoted(*pivot_, ended[i].corners());
     } else {
@@ -156,8 +157,9 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     submit_ended(*polygon, std::move(record), pivot_, std::move(fallback));
   }
   if (!current) {
-    if (part_) submit_ended(part_->last, part_->record, std::nullopt);  // the stroke ended with nothing more to cut
+    if (part_) submit_ended(part_->last, part_->record, std::nullopt, part_->last);  // the stroke ended with nothing more to cut
     part_.reset();
+    frame_.reset();
     pivot_.reset();
     crossing_.reset();
     return out;
@@ -329,6 +331,7 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   a.record = std::move(q.record);
   a.select = q.select;
   a.fallback = std::move(q.fallback);
+  a.is_fallback = q.is_fallback;
   if (q.provisional) provisional_queued_ = false;
   first_cut_vertex_ = std::min(first_cut_vertex_, mt.num_vertices());
   a.tx = Transaction{mt.num_fragments(), mt.num_vertices(), {}, bvh.mark()};
@@ -437,20 +440,20 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
       result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &*a.tx.bvh_mark);
       result.refused_reported_vertices = a.tx.changes.made_vertices.size() - call.made_vertices.size();
       result.changes.counts.add(call.counts);
-      // A part's end refused: its commits, which owe the fragments what the
-      // end would have split, are taken back too, the last first, and the
-      // part is not cut at all (as a single cut of its polygon refused).
       const std::shared_ptr<PartRecord> record = a.record;
       const CutSelect select = a.select;
       std::optional<CutPolygon> fallback = std::move(a.fallback);
+      const bool was_fallback = a.is_fallback;
       active_.reset();  // `a` is gone from here
       if (record && select != CutSelect::kAll) take_back_frame(mt, bvh, record, select, result);
       // A part's end refused: its commits owe the fragments what the end
       // splits, so the part ends where its last frame's front did, which
-      // its guard kept (the caller runs the cutter again after mapping the
-      // refusal).
-      if (record && select == CutSelect::kAll && fallback)
-        queue_.push_front({.polygon = *fallback, .record = record, .stroke = true});
+      // its guard kept (Queued::fallback; the caller runs the cutter again
+      // after mapping the refusal).
+      if (record && select == CutSelect::kAll && fallback && !was_fallback)
+        queue_.push_front({.polygon = *fallback, .record = record, .stroke = true, .fallback = fallback, .is_fallback = true});
+      else if (record && select == CutSelect::kAll && fallback)
+        queue_.push_front({.polygon = *fallback, .record = record, .select = CutSelect::kFront, .stroke = true});
       pieces_stale_ = pieces_stale_ || result.refused->fragments_removed > 0;
       ++refused_;
       break;  // the caller maps its frontier through the retraction before any later cut
@@ -522,8 +525,6 @@ void TimeCriticalCutter::take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_
       // This call reported the commit: it is dropped from the report, and
       // the caller, which maps the report before the refusal, never sees it.
       result.changes.truncate(*frame.reported_from);
-      result.pieces.reset();
-      pieces_stale_ = true;
     } else {
       CutRetraction& out = *result.refused;
       out.revived.insert(out.revived.end(), retraction.revived.begin(), retraction.revived.end());
@@ -532,9 +533,18 @@ void TimeCriticalCutter::take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_
       out.fragments_removed += retraction.fragments_removed;
       result.refused_reported_vertices += c.changes.made_vertices.size();  // reported when it was kept
     }
+    result.pieces.reset();  // counted after the commit, perhaps
+    pieces_stale_ = true;
   }
   record->take_back(frame.commit ? &frame.commit->changes : nullptr, std::move(frame.before));
   searched_.reset();
+  if (!queue_.empty() || provisional_held()) {
+    // A later frame is queued already (a budget left this one's jobs for
+    // later calls): it is cut against the record as it is now, searching
+    // all its polygon crosses.
+    record->set_front(std::nullopt);
+    return;
+  }
   if (!frame.previous) return;  // the part's first frame: nothing was cut before it
   if (part_ && part_->record.get() == record.get()) part_->last = *frame.previous;
   // The last frame's front again: the caller runs the cutter once more

@@ -168,7 +168,10 @@ class TimeCriticalCutter {
     // back: the call stops there, and the caller maps its frontier through
     // the retraction (follow_retraction) after following `changes`.
     std::optional<CutRetraction> refused;
-    std::size_t refused_reported_vertices = 0;  // vertices of the refused cut that earlier calls reported
+    // Vertices of the refused cut that earlier calls reported, and of a
+    // part's commit taken back with it (TimeCriticalCutter) that a call
+    // reported before this one.
+    std::size_t refused_reported_vertices = 0;
   };
   RunResult run(Mt& mt, TetBvh& bvh, const Frontier& frontier, const CutBudget& budget);
 
@@ -214,8 +217,12 @@ class TimeCriticalCutter {
     bool stroke = false;
     std::optional<std::array<Vec3, 2>> leading{};
     // A part's end: its polygon of the last frame, cut instead should the
-    // end be refused (its commits owe the fragments what the end splits).
+    // end be refused (its commits owe the fragments what the end splits):
+    // first as an end, then, should that be refused too, as the last
+    // frame's front was cut, for good (`select` kFront, not provisional: it
+    // decomposes no fragment, so the tissue there stays joined).
     std::optional<CutPolygon> fallback{};
+    bool is_fallback = false;  // this is that first fallback
   };
   // Where a stroke's polygon goes on from the one before it across a gentle
   // turn: the earlier polygon's outline edge (a, b) that the next starts on,
@@ -240,7 +247,7 @@ class TimeCriticalCutter {
   // that fits those corners best; nullopt when none lies ahead.
   static std::optional<CutPolygon> pivoted(const Pivot& pivot, const std::vector<Vec3>& corners);
   // Queues the part's frame: its committed tets, then its front
-  // provisionally (or all it crosses beyond its commits, provisionally).
+  // provisionally.
   void submit_part(const Part& part, std::optional<CutPolygon> grown_from = std::nullopt);
   // The pivot where `next` goes on from `previous` across a gentle turn, if it does.
   static std::optional<Pivot> pivot_between(const CutPolygon& previous, const CutPolygon& next);
@@ -283,6 +290,7 @@ class TimeCriticalCutter {
     std::size_t next = 0;             // next entry of `order`
     bool reported_before = false;     // an earlier call reported some of its changes
     std::optional<CutPolygon> fallback;  // Queued::fallback
+    bool is_fallback = false;
   };
   void start_next(const Mt& mt, TetBvh& bvh, const Frontier& frontier);
   void extend_geometry(std::span<const MadeVertex> made);
