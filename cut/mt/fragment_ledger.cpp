@@ -88,17 +88,43 @@ std::vector<FragId> fragments_out_of_balance(const Mt& mt, const MtChangeReport&
 }
 
 void FragmentLedger::add(const Mt& mt, const MtChangeReport& cut) {
-  const std::vector<FragId> decomposed = decomposed_fragments(cut);
-  if (!decomposed.empty())
+  add_cut(sums_, mt, cut, {});
+  if (!cut.fragment_splits.empty()) {
+    // A decomposed fragment's parts (and a part split again) form a group.
+    // Each face lies in one part's region (parts share no vertex), so the
+    // group's entries summed face by face are each part's: when they all
+    // cancel, every part balances and the group leaves the ledger; else its
+    // fragments enter by what their tets sum to (a pass over them).
+    absl::flat_hash_map<std::int32_t, std::int32_t> group;  // fragment -> its group's first fragment
+    const auto find = [&](std::int32_t f) {
+      while (true) {
+        const auto it = group.find(f);
+        if (it == group.end() || it->second == f) return f;
+        f = it->second;
+      }
+    };
+    for (const FragmentSplit& split : cut.fragment_splits) {
+      const std::int32_t root = find(split.old.value);
+      group[root] = root;
+      for (FragId part : split.parts) group[find(part.value)] = root;
+    }
+    Sums totals;
+    for (const auto& [key, sum] : sums_)
+      if (group.contains(key[0])) totals[{find(key[0]), key[1], key[2], key[3]}] += sum;
+    absl::flat_hash_map<std::int32_t, bool> unbalanced;  // group -> some face does not cancel
+    for (const auto& [key, sum] : totals) unbalanced[key[0]] = unbalanced[key[0]] || sum != 0;
     for (auto it = sums_.begin(); it != sums_.end();) {
-      if (std::binary_search(decomposed.begin(), decomposed.end(), FragId(it->first[0])))
+      if (group.contains(it->first[0]))
         sums_.erase(it++);
       else
         ++it;
     }
-  add_cut(sums_, mt, cut, decomposed);
-  for (FragId f : decomposed)
-    if (f != mt.root() && f != mt.drain()) add_whole(sums_, mt, f);
+    for (const auto& [f, root] : group) {
+      const auto it = unbalanced.find(find(f));
+      if (it != unbalanced.end() && it->second && FragId(f) != mt.root() && FragId(f) != mt.drain())
+        add_whole(sums_, mt, FragId(f));
+    }
+  }
   drop_zeros(sums_);
 }
 

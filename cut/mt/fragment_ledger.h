@@ -48,8 +48,9 @@ std::vector<FragId> fragments_out_of_balance(const Mt& mt, const MtChangeReport&
 class FragmentLedger {
  public:
   // Adds what `cut` changed in its fragments (not the root or the drain).
-  // A fragment the cut decomposed, and its parts, are entered by what their
-  // tets sum to (a pass over their tets, as the decomposition was).
+  // A fragment the cut decomposed, and its parts, leave the ledger when
+  // they balance; else they are entered by what their tets sum to (a pass
+  // over their tets, as the decomposition was).
   void add(const Mt& mt, const MtChangeReport& cut);
 
   // The fragments (not the root, the drain or in `skip`, which is sorted)
