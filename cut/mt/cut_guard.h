@@ -19,10 +19,12 @@
 // and did not decompose is checked from what the cut changed in it, with
 // what the part's commits owe it (fragment_ledger.h: every fragment was
 // valid before the part's first cut; a part's commit leaves the fragments
-// owing what its front splits, and the front's check pays it back); the
+// owing what its front splits, and the front's check pays it back; a
+// part that has met no older crack is not checked so, part_record.h); the
 // fragments where the new crack meets an old one (they hold a piece of an
-// earlier cut that this one split or relabelled) are checked whole, with
-// their parts, when the cut decomposed them;
+// earlier cut that this one split or relabelled), and those that owe the
+// part's ledger, are checked whole, with their parts, when the cut
+// decomposed them;
 // and at the finest and coarsest resolutions (those validate() checks
 // whole): every piece the cut made is positively oriented (exact),
 // and around every edge of a piece whose two ends cuts made, the faces
