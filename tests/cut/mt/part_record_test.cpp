@@ -7,12 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <string>
 
 #include "cut/mt/fragment_ledger.h"
 #include "cut/mt/mt_pieces.h"
 #include "cut/mt/stroke_cutter.h"
-#include "tests/cut/mt/mt_cut_test_util.h"
+#include "tests/cut/mt/stroke_test_util.h"
 
 namespace mtcut::test {
 namespace {
@@ -36,20 +37,22 @@ struct PartRun {
   bool valid = true;
 };
 
+// What a test looks at after each frame that changed the MT (k: the frame).
+using FrameCheck = std::function<void(int k, const Mt& mt, const cut::TimeCriticalCutter& cutter)>;
+
 // The stroke in `steps` frames of a pose each, then one that disengages;
 // MT, BVH, frontier, cutter (and with it the part's record) validated after
-// every frame.
-PartRun cut_part(const Mt& original, int steps, double depth, double lean, const Vec3& direction,
-                 const std::string& where) {
+// every frame; `check`, if given, after each.
+PartRun cut_part(const Mt& original, const Path& path, int steps, const std::string& where,
+                 const FrameCheck& check = {}) {
   PartRun out{original};
   Mt& mt = out.mt;
   engine::TetBvh bvh(mt);
   Frontier frontier = Frontier::coarsest(mt);
   cut::StrokeSweep stroke;
   cut::TimeCriticalCutter cutter;
-  const engine::Aabb box = mt_box(mt);
   for (int k = 0; k <= steps + 1 && out.valid; ++k) {
-    cut::BladePose pose = blade_at(box, std::min(1.0, static_cast<double>(k) / steps), depth, lean, direction);
+    cut::BladePose pose = path(std::min(1.0, static_cast<double>(k) / steps));
     pose.engaged = k <= steps;
     const cut::StrokeStep step = cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, std::span(&pose, 1));
     if (!step.recut) continue;
@@ -61,33 +64,13 @@ PartRun cut_part(const Mt& original, int steps, double depth, double lean, const
     if (const cut::MtChangeReport* front = cutter.provisional_changes(); front && cutter.part_record())
       out.most_provisional = std::max(out.most_provisional, front->replaced.size());
     if (cutter.part_record()) out.committed = std::max(out.committed, cutter.part_record()->num_owned());
-    // A straight part through a fresh MT meets no older crack: its fronts
-    // need no balance check (part_record.h).
-    if (cutter.part_record()) {
-      EXPECT_FALSE(cutter.part_record()->met_old_crack()) << where << " step " << k;
-    }
+    if (check) check(k, mt, cutter);
   }
   EXPECT_FALSE(cutter.provisional_held()) << where;
   EXPECT_EQ(cutter.part_record(), nullptr) << where << ": the part's record outlived the stroke";
   EXPECT_EQ(cutter.cuts_refused(), 0u) << where;
   out.pieces = cut::find_pieces(mt).count;
   return out;
-}
-
-// The same stroke with all its poses in one frame: one polygon per part.
-Mt cut_at_once(const Mt& original, int steps, double depth, double lean, const Vec3& direction) {
-  Mt mt = original;
-  engine::TetBvh bvh(mt);
-  Frontier frontier = Frontier::coarsest(mt);
-  cut::StrokeSweep stroke;
-  cut::TimeCriticalCutter cutter;
-  const engine::Aabb box = mt_box(mt);
-  std::vector<cut::BladePose> poses;
-  for (int k = 0; k <= steps; ++k) poses.push_back(blade_at(box, static_cast<double>(k) / steps, depth, lean, direction));
-  poses.push_back(poses.back());
-  poses.back().engaged = false;
-  cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, poses);
-  return mt;
 }
 
 // Straight strokes across the object, through it and with the tip inside,
@@ -106,12 +89,20 @@ TEST(PartRecord, AFrameResplitsOnlyTheFront) {
         const double lean = 0.15;
         const std::string where =
             name + " depth " + std::to_string(depth) + ", " + std::to_string(steps) + " steps";
-        const PartRun r = cut_part(original, steps, depth, lean, direction, where);
+        const engine::Aabb box = mt_box(original);
+        const Path path = [&](double s) { return blade_at(box, s, depth, lean, direction); };
+        // A straight part through a fresh MT meets no older crack: its
+        // fronts need no balance check (part_record.h).
+        const PartRun r = cut_part(original, path, steps, where, [&](int k, const Mt&, const cut::TimeCriticalCutter& c) {
+          if (c.part_record()) {
+            EXPECT_FALSE(c.part_record()->met_old_crack()) << where << " step " << k;
+          }
+        });
         if (!r.valid) return;
         EXPECT_GT(r.committed, 0u) << where << ": nothing was committed";
         EXPECT_LE(4 * r.most_provisional, r.committed) << where << ": a frame re-split "
                                                        << r.most_provisional << " tets of " << r.committed;
-        EXPECT_TRUE(canonical_mt(r.mt) == canonical_mt(cut_at_once(original, steps, depth, lean, direction)))
+        EXPECT_TRUE(canonical_mt(r.mt) == canonical_mt(cut_at_once(original, path, steps)))
             << where;
         if (depth > 1) {
           EXPECT_EQ(r.pieces, 2u) << where;
@@ -154,31 +145,18 @@ TEST(PartRecord, APartAfterASharpTurnCommitsWhereItMeetsTheFirstCrack) {
     for (const double depth : {0.6, 1.1}) {
       for (const int steps : {60, 200}) {
         const std::string where = name + " L, depth " + std::to_string(depth) + ", " + std::to_string(steps) + " steps";
-        Mt mt = original;
-        engine::TetBvh bvh(mt);
-        Frontier frontier = Frontier::coarsest(mt);
-        cut::StrokeSweep stroke;
-        cut::TimeCriticalCutter cutter;
-        const engine::Aabb box = mt_box(mt);
+        const engine::Aabb box = mt_box(original);
+        const Path path = [&](double s) { return l_blade_at(box, s, depth); };
         std::size_t committed = 0, most_front = 0, owing_fronts = 0, frames = 0, met = 0;
-        bool valid = true;
-        for (int k = 0; k <= steps + 1 && valid; ++k) {
-          cut::BladePose pose = l_blade_at(box, std::min(1.0, static_cast<double>(k) / steps), depth);
-          pose.engaged = k <= steps;
-          const cut::StrokeStep step = cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, std::span(&pose, 1));
-          if (!step.recut) continue;
-          for (const auto& report : {mt.validate(), bvh.validate(mt), engine::validate_frontier(mt, frontier),
-                                     cutter.validate(mt)}) {
-            EXPECT_TRUE(report.ok()) << where << " step " << k << ": " << report.summary();
-            valid = valid && report.ok();
-          }
+        const PartRun r = cut_part(original, path, steps, where, [&](int k, const Mt& mt,
+                                                                     const cut::TimeCriticalCutter& cutter) {
           const cut::PartRecord* record = cutter.part_record();
           const cut::MtChangeReport* front = cutter.provisional_changes();
-          if (2 * k <= steps + 2 || !record || !front) continue;  // the second part's frames
+          if (2 * k <= steps + 2 || !record || !front) return;  // the second part's frames
           ++frames;
           committed = std::max(committed, record->num_owned());
           most_front = std::max(most_front, front->replaced.size());
-          if (!record->met_old_crack()) continue;
+          if (!record->met_old_crack()) return;
           ++met;
           const cut::FragmentLedger& owed = record->owed();
           const std::vector<engine::FragId> skip = cut::decomposed_fragments(*front);
@@ -188,9 +166,8 @@ TEST(PartRecord, APartAfterASharpTurnCommitsWhereItMeetsTheFirstCrack) {
             EXPECT_FALSE(cut::fragments_out_of_balance(mt, *front).empty())
                 << where << " step " << k << ": the commits owed the fragments nothing the front paid";
           }
-        }
-        if (!valid) return;
-        EXPECT_EQ(cutter.cuts_refused(), 0u) << where;
+        });
+        if (!r.valid) return;
         EXPECT_GT(frames, 0u) << where;
         // Where the turn lies in the tissue, the part after it crosses the
         // first crack (TimeCriticalCutter: the two cracks cross).
@@ -203,22 +180,10 @@ TEST(PartRecord, APartAfterASharpTurnCommitsWhereItMeetsTheFirstCrack) {
         EXPECT_GT(committed, 0u) << where << ": the part after the turn committed nothing";
         EXPECT_LE(2 * most_front, committed) << where << ": a frame re-split " << most_front << " tets of "
                                              << committed;
-        Mt at_once = original;
-        {
-          engine::TetBvh bvh_once(at_once);
-          Frontier frontier_once = Frontier::coarsest(at_once);
-          cut::StrokeSweep stroke_once;
-          cut::TimeCriticalCutter cutter_once;
-          std::vector<cut::BladePose> poses;
-          for (int k = 0; k <= steps; ++k) poses.push_back(l_blade_at(box, static_cast<double>(k) / steps, depth));
-          poses.push_back(poses.back());
-          poses.back().engaged = false;
-          cut::cut_stroke_step(stroke_once, cutter_once, at_once, bvh_once, frontier_once, poses);
-        }
-        EXPECT_EQ(cut::find_pieces(mt).count, cut::find_pieces(at_once).count) << where;
+        EXPECT_EQ(r.pieces, cut::find_pieces(cut_at_once(original, path, steps)).count) << where;
         std::printf("[ report   ] %s: after the turn, %zu of %zu frames met the first crack, front at most %zu tets, "
                     "%zu committed pieces, %zu pieces\n",
-                    where.c_str(), met, frames, most_front, committed, cut::find_pieces(mt).count);
+                    where.c_str(), met, frames, most_front, committed, r.pieces);
       }
     }
   }

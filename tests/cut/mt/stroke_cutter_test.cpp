@@ -13,13 +13,12 @@
 #include <random>
 
 #include "cut/mt/mt_pieces.h"
-#include "tests/cut/mt/mt_cut_test_util.h"
+#include "tests/cut/mt/stroke_test_util.h"
 
 namespace mtcut::test {
 namespace {
 
 // A blade pose at s in [0, 1] of a stroke.
-using Path = std::function<cut::BladePose(double s)>;
 
 struct StrokeOutcome {
   Mt mt;
@@ -67,23 +66,6 @@ StrokeOutcome cut_progressively(const Mt& original, const Path& path, int steps,
   out.pieces = cut::find_pieces(mt).count;
   out.refused = cutter.cuts_refused();
   return out;
-}
-
-// The same stroke with all its poses in one step: each straight part cut
-// once, at the end.
-Mt cut_at_once(const Mt& original, const Path& path, int steps) {
-  Mt mt = original;
-  engine::TetBvh bvh(mt);
-  Frontier frontier = Frontier::coarsest(mt);
-  cut::StrokeSweep stroke;
-  cut::TimeCriticalCutter cutter;
-  std::vector<cut::BladePose> poses;
-  for (int k = 0; k <= steps; ++k) poses.push_back(path(static_cast<double>(k) / steps));
-  cut::BladePose away = poses.back();
-  away.engaged = false;
-  poses.push_back(away);
-  cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, poses);
-  return mt;
 }
 
 // A vertical blade across the box along y at x = box x + `at` of its width,
