@@ -72,12 +72,13 @@ struct StrokeRun {
 // poses each, then one frame that disengages the blade.
 StrokeRun cut_stroke(const engine::Mt& original, const StrokeShape& shape, int steps, int per_frame) {
   engine::Mt mt = original;
+  cut::TimeCriticalCutter cutter;
+  cutter.reserve(mt);  // as the World does when it is made: setup, not a step
   engine::TetBvh bvh(mt);
   engine::Frontier frontier = engine::Frontier::coarsest(mt);
   Vec3 lo = mt.position(engine::VertId(0)), hi = lo;
   for (const Vec3& p : mt.positions()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   cut::StrokeSweep stroke;
-  cut::TimeCriticalCutter cutter;
   StrokeRun out;
   const std::size_t before = mt.num_live_tets();
   const int samples = steps * per_frame;

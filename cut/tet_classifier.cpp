@@ -123,6 +123,12 @@ CutClassifier::CutClassifier(const CutPolygon& polygon, std::span<const Vec3> po
   }
 }
 
+void CutClassifier::Scratch::reserve(std::size_t vertices) {
+  if (in_use) throw std::logic_error("CutClassifier::Scratch::reserve: a classifier holds it");
+  if (info.size() < vertices) info.resize(vertices);
+  if (code.size() < vertices) code.resize(vertices, 0);
+}
+
 engine::ValidationReport CutClassifier::Scratch::validate() const {
   engine::ValidationReport report;
   if (in_use) report.add("CutClassifier::Scratch: still held by a classifier");

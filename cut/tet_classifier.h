@@ -126,6 +126,9 @@ class CutClassifier {
    public:
     // Handed back clean: no classifier holds it, every entry is pristine.
     engine::ValidationReport validate() const;
+    // Room for a mesh of `vertices` (between classifiers), so that none
+    // grows it.
+    void reserve(std::size_t vertices);
 
    private:
     friend class CutClassifier;

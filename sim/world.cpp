@@ -53,9 +53,11 @@ World::~World() {
 
 World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt)), bvh_(mt_) {
   if (def_.lod.background_build) builder_ = std::make_unique<WorkerThread>();
+  cutter_.reserve(mt_);  // room for the strokes' cuts, made now rather than in a frame
   frontier_ = def_.lod.enabled ? engine::Frontier::coarsest(mt_) : engine::Frontier::finest(mt_);
   model_ = ModelInputs::of(mt_, frontier_, def_.material, def_.fixed).build();
   state_ = rest_state(model_);
+  pieces_ = cut::find_pieces(mt_).count;  // the cutter reports them once a cut may change them
 }
 
 engine::ErrorField World::error_field(const ScalpelPose& pose) const {

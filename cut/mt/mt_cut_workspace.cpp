@@ -4,6 +4,15 @@
 
 namespace mtcut::cut {
 
+void MtCutWorkspace::reserve(std::size_t vertices, std::size_t tets, std::size_t fragments) {
+  classifier.reserve(vertices);
+  if (separating.size() < vertices) separating.resize(vertices, 0);
+  if (decomposition.vertex_owner.size() < vertices) decomposition.vertex_owner.resize(vertices, -1);
+  if (pending_of.size() < tets) pending_of.resize(tets, -1);
+  if (id_bits.size() < tets / 64 + 1) id_bits.resize(tets / 64 + 1, 0);
+  if (job_of_fragment.size() < fragments) job_of_fragment.resize(fragments, -1);
+}
+
 engine::ValidationReport MtCutWorkspace::validate() const {
   engine::ValidationReport report = classifier.validate();
   for (std::size_t v = 0; v < separating.size(); ++v)

@@ -25,6 +25,9 @@ struct MtCutWorkspace {
   std::vector<std::uint64_t> id_bits;  // (>= n_tets / 64) the search's sort of tet and fragment ids; all 0 between cuts
   std::vector<std::int32_t> job_of_fragment;  // (>= n_fragments) the search's job of a fragment; all -1 between cuts
 
+  // Room for an MT of `vertices`, `tets` and `fragments` (between cuts):
+  // every array sized, pristine, so that no cut grows one.
+  void reserve(std::size_t vertices, std::size_t tets, std::size_t fragments);
   // Handed back clean (between cuts): every entry pristine. O(n_vertices), for tests.
   engine::ValidationReport validate() const;
 };

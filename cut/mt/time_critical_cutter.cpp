@@ -552,6 +552,13 @@ void TimeCriticalCutter::take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_
   queue_provisional({.polygon = *frame.previous, .record = record, .select = CutSelect::kFront, .stroke = true});
 }
 
+void TimeCriticalCutter::reserve(Mt& mt) {
+  const auto room = [](std::size_t n) { return static_cast<std::size_t>(kRoom * static_cast<double>(n)); };
+  const std::size_t vertices = room(mt.num_vertices()), tets = room(std::max(mt.num_tets(), kReclaimMin));
+  mt.reserve(vertices, tets);
+  workspace_.reserve(vertices, tets, room(mt.num_fragments()));
+}
+
 bool TimeCriticalCutter::reclaimable(const Mt& mt) const {
   std::size_t held = held_ ? held_->changes.replaced.size() : 0;  // dead, kept to revive
   if (frame_ && frame_->commit) held += frame_->commit->changes.replaced.size();
@@ -620,7 +627,10 @@ engine::ValidationReport TimeCriticalCutter::validate(const Mt& mt) const {
     for (auto& p : validate_retractable(mt, frame_->commit->changes, frame_->commit->fragments_before).problems)
       report.add("cutter: the frame's commit: " + p);
   for (auto& p : crack_.validate().problems) report.add("cutter: " + p);
-  if (!active_) return report;
+  if (!active_) {  // between cuts: the cuts' storage is handed back clean
+    for (auto& p : workspace_.validate().problems) report.add("cutter: " + p);
+    return report;
+  }
   const Active& a = *active_;
   for (auto& p : a.cut->validate(mt).problems) report.add(p);
   for (std::size_t i = 0; i < a.order.size(); ++i) {

@@ -156,8 +156,9 @@ class TimeCriticalCutter {
   // Processes jobs within `budget`, visible fragments of `frontier` first
   // (frontier: the World's, mapped after every call). Returns what changed;
   // `pieces` is filled when the call finished a cut, def.report_pieces and
-  // the pieces may have changed since they were last counted (a fragment
-  // split, or a retraction that merged parts), except while a part's crack
+  // the pieces may have changed since they were last counted or the cutter
+  // was made (a fragment split, or a retraction that merged parts: the
+  // caller counts the MT's pieces before its first cut), except while a part's crack
   // has a front inside the tissue: its pieces are counted when a commit
   // leaves no front, or at the part's end.
   struct RunResult {
@@ -190,13 +191,23 @@ class TimeCriticalCutter {
   // dead tets as there are live ones. The tets that the held cut and a
   // frame's kept commit split stay, dead, to be revived.
   static constexpr std::size_t kReclaimMin = 4096;
+  // Room for progressive cutting, made before the first stroke (at setup,
+  // not in a frame): the MT's arrays and this cutter's per-vertex and
+  // per-tet storage sized to kRoom times the MT's vertices and tets (live
+  // tets, as many dead ones before a reclaim, and what the stroke adds),
+  // so that no step of a stroke copies them to grow them (a copy of the
+  // liver's MT was a millisecond step). A larger MT later grows them as
+  // before. The MT's contents do not change.
+  void reserve(Mt& mt);
+  static constexpr double kRoom = 3.0;
   bool reclaimable(const Mt& mt) const;  // reclaim() would compact now
   std::optional<engine::Mt::Compaction> reclaim(Mt& mt, TetBvh& bvh);
   CutterProgress progress() const;
   std::size_t cuts_refused() const { return refused_; }
   // The active cut's bookkeeping (MtCut::validate) and the job order:
   // no hidden job done while a visible one is pending; a held provisional
-  // cut can be retracted (validate_retractable).
+  // cut can be retracted (validate_retractable); between cuts, the cuts'
+  // storage is clean (MtCutWorkspace::validate).
   engine::ValidationReport validate(const Mt& mt) const;
 
  private:
@@ -340,8 +351,11 @@ class TimeCriticalCutter {
   std::optional<Pivot> pivot_;  // the last ended polygon's, when the stroke goes on from it
   std::optional<Crossing> crossing_;  // the last sharp turn's, while the part after it is cut
   // A fragment split or a retraction merged parts since pieces were last
-  // counted: the next finished cut counts them (else it reports none).
-  bool pieces_stale_ = true;
+  // counted (or since the cutter was made: the caller counts the MT's
+  // pieces before its first cut): the next finished cut counts them (else it
+  // reports none). A cut that changes nothing, a blade still outside the
+  // tissue, costs no pass over the MT.
+  bool pieces_stale_ = false;
   CutterProgress totals_;
   std::size_t refused_ = 0;
 };

@@ -279,7 +279,6 @@ Mt::Compaction Mt::compact(std::size_t first_droppable_vertex, std::span<const T
   }
   out.vertices_dropped = num_vertices() - static_cast<std::size_t>(next);
   positions_.resize(static_cast<std::size_t>(next));
-  positions_.shrink_to_fit();
 
   std::size_t kept = 0;
   for (std::size_t t = 0; t < num_tets(); ++t) {
@@ -298,10 +297,9 @@ Mt::Compaction Mt::compact(std::size_t first_droppable_vertex, std::span<const T
     ++kept;
   }
   out.tets_dropped = num_tets() - kept;
-  const auto shrink = [kept](auto& v) {
-    v.resize(kept);
-    v.shrink_to_fit();
-  };
+  // The arrays keep their capacity: the stroke in progress grows them
+  // again, and growing them back would copy them all in one of its steps.
+  const auto shrink = [kept](auto& v) { v.resize(kept); };
   shrink(tet_verts_);
   shrink(tet_birth_);
   shrink(tet_death_);

@@ -140,7 +140,8 @@ class Mt {
   // replaced(f) keeps its order). What reclaims the slots that cuts taken
   // back leave (cut/mt/cut_retraction.h): everything that holds tet or
   // vertex ids of this MT must follow the returned maps or be rebuilt.
-  // instance() is renewed.
+  // instance() is renewed. The arrays keep their capacity (what follows a
+  // compaction, a stroke going on, grows them again).
   struct Compaction {
     std::vector<std::int32_t> tet_map;     // (old n_tets) new index, -1 dropped
     std::vector<std::int32_t> vertex_map;  // (old n_vertices) new index, -1 dropped

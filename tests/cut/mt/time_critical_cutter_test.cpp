@@ -113,7 +113,9 @@ TEST(TimeCriticalCutter, AProvisionalCutCountsPiecesOnlyWithoutAFront) {
   // A provisional cut whose outline passes through the tissue (a stroke's
   // blade in it) separates nothing but a lobe, and the next frame takes it
   // back: its pieces are not counted (a pass over the MT). The same cut
-  // through the whole object counts them. A fresh cutter's pieces are stale.
+  // through the whole object counts them. A cut that changes nothing (the
+  // blade not in the tissue yet) counts none: the caller counted the MT's
+  // pieces before the cutter's first cut.
   Mt mt = cut_test_mt("ellipsoid");
   engine::TetBvh bvh(mt);
   Frontier frontier = Frontier::coarsest(mt);
@@ -127,6 +129,15 @@ TEST(TimeCriticalCutter, AProvisionalCutCountsPiecesOnlyWithoutAFront) {
         {Vec3(x, y_lo, z_lo), Vec3(x, y_hi, z_lo), Vec3(x, y_hi, z_hi), Vec3(x, y_lo, z_hi)});
   };
   TimeCriticalCutter cutter;
+  const double outside = box.lo.y() - 0.05 * size.y();
+  cutter.submit_provisional(CutPolygon::from_points({Vec3(centre.x(), outside, box.lo.z()),
+                                                      Vec3(centre.x(), outside - 0.01 * size.y(), box.lo.z()),
+                                                      Vec3(centre.x(), outside, box.hi.z())}));
+  const TimeCriticalCutter::RunResult nothing = cutter.run(mt, bvh, frontier, CutBudget::unlimited());
+  EXPECT_EQ(nothing.cuts_finished, 1u);
+  EXPECT_TRUE(nothing.changes.replaced.empty());
+  EXPECT_FALSE(nothing.pieces.has_value()) << "a cut that changed nothing counted pieces";
+  if (const std::optional<cut::CutRetraction> none = cutter.retract(mt, bvh)) cut::follow_retraction(mt, frontier, *none);
   cutter.submit_provisional(square(centre.y()));  // into the middle
   TimeCriticalCutter::RunResult partial = cutter.run(mt, bvh, frontier, CutBudget::unlimited());
   cut::follow_cut(mt, frontier, partial.changes);
@@ -142,6 +153,32 @@ TEST(TimeCriticalCutter, AProvisionalCutCountsPiecesOnlyWithoutAFront) {
   for (const auto& report : {mt.validate(), bvh.validate(mt), engine::validate_frontier(mt, frontier),
                              cutter.validate(mt)})
     EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+TEST(TimeCriticalCutter, RoomReservedChangesNoCut) {
+  // The room a World reserves when it is made (TimeCriticalCutter::reserve)
+  // changes neither the MT nor what a cut makes of it: the same cuts give
+  // the same MT, and the cutter's storage is handed back clean.
+  const auto polygons = three_cuts();
+  const auto cut_all = [&](bool reserve) {
+    Mt mt = cut_test_mt("ellipsoid");
+    engine::TetBvh bvh(mt);
+    Frontier frontier = Frontier::coarsest(mt);
+    TimeCriticalCutter cutter;
+    if (reserve) {
+      cutter.reserve(mt);
+      EXPECT_TRUE(canonical_mt(mt) == canonical_mt(cut_test_mt("ellipsoid")));
+      EXPECT_TRUE(cutter.validate(mt).ok()) << cutter.validate(mt).summary();
+    }
+    for (const CutPolygon& p : polygons) {
+      cutter.submit(mt, p);
+      cut::follow_cut(mt, frontier, cutter.run(mt, bvh, frontier, CutBudget::unlimited()).changes);
+      EXPECT_TRUE(cutter.validate(mt).ok()) << cutter.validate(mt).summary();
+    }
+    EXPECT_TRUE(mt.validate().ok()) << mt.validate().summary();
+    return mt;
+  };
+  EXPECT_TRUE(canonical_mt(cut_all(true)) == canonical_mt(cut_all(false)));
 }
 
 TEST(TimeCriticalCutter, MapFragmentSetAddsEveryPart) {
