@@ -107,7 +107,7 @@ StrokeRun cut_stroke(const engine::Mt& original, const StrokeShape& shape, int s
   out.new_tets = mt.num_live_tets() - before;
   out.tet_slots = mt.num_tets();
   out.vertices = mt.num_vertices();
-  out.pieces = cut::find_pieces(mt).count;
+  out.pieces = cut::count_pieces(mt);
   out.steps_cut = out.step_ms.size();
   return out;
 }

@@ -57,7 +57,7 @@ World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt))
   frontier_ = def_.lod.enabled ? engine::Frontier::coarsest(mt_) : engine::Frontier::finest(mt_);
   model_ = ModelInputs::of(mt_, frontier_, def_.material, def_.fixed).build();
   state_ = rest_state(model_);
-  pieces_ = cut::find_pieces(mt_).count;  // the cutter reports them once a cut may change them
+  pieces_ = cut::count_pieces(mt_);  // the cutter reports them once a cut may change them
 }
 
 engine::ErrorField World::error_field(const ScalpelPose& pose) const {
@@ -208,7 +208,7 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
             cutter_.recut(mt_, bvh_, advance.ended, advance.turned_back, current, stroke_.plane_fixed())) {
       cut::follow_retraction(mt_, frontier_, *retraction);
       if (m.cuts_started == 0 && retraction->fragments_removed > 0)
-        pieces_ = cut::find_pieces(mt_).count;  // the stroke left nothing to cut
+        pieces_ = cut::count_pieces(mt_);  // the stroke left nothing to cut
     }
   }
   const cut::CutBudget budget = def_.cut_budget.unit == CutBudgetDef::Unit::kTets
@@ -241,7 +241,7 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     stroke.finished = !stroke_.active() && !cutter_.frozen();
   }
   m.cut_tets = result.changes.replaced.size();
-  if (result.pieces) pieces_ = result.pieces->count;
+  if (result.pieces) pieces_ = *result.pieces;
   // Jobs of hidden fragments (a small budget defers them to later frames)
   // change tets no frontier tet is: the springs stay as they are, where a
   // rebuild would cost each such frame a model (liver, budget_tets = 5:

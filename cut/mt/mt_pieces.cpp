@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <span>
 #include <string>
 
 namespace mtcut::cut {
@@ -26,27 +27,15 @@ struct UnionFind {
   }
 };
 
-}  // namespace
-
-MtPieces find_pieces(const Mt& mt) {
-  // Nodes: the finest tets in ascending id order (marked, then numbered in
-  // one pass over the ids: no sort), then one per fragment.
-  std::vector<std::int32_t> fine_index(mt.num_tets(), -1);
-  for (TetId t : mt.created(mt.root())) fine_index[t.index()] = 0;
-  std::vector<TetId> finest;
-  finest.reserve(mt.created(mt.root()).size());
-  for (std::size_t i = 0; i < fine_index.size(); ++i)
-    if (fine_index[i] == 0) {
-      fine_index[i] = static_cast<std::int32_t>(finest.size());
-      finest.emplace_back(i);
-    }
+// The pieces' union-find. Nodes: the finest tets in the order of
+// created(root) (node i is created(root)[i]), then one per fragment (n_fine
+// + f). Finest tets are joined through their shared vertices, and every
+// live tet (through the fragments' lists: no pass over dead slots) joins
+// its birth with its death, the drain aside.
+UnionFind join_pieces(const Mt& mt) {
+  const std::span<const TetId> finest = mt.created(mt.root());
   const std::size_t n_fine = finest.size();
   UnionFind uf(n_fine + mt.num_fragments());
-  const auto frag_node = [&](FragId f) { return static_cast<std::int32_t>(n_fine + f.index()); };
-  const auto tet_node = [&](TetId t) {
-    return mt.birth(t) == mt.root() ? fine_index[t.index()] : frag_node(mt.birth(t));
-  };
-
   std::vector<std::int32_t> owner(mt.num_vertices(), -1);
   for (std::size_t i = 0; i < n_fine; ++i)
     for (VertId v : mt.tet(finest[i])) {
@@ -55,16 +44,34 @@ MtPieces find_pieces(const Mt& mt) {
       else
         uf.unite(owner[v.index()], static_cast<std::int32_t>(i));
     }
-  for (std::size_t i = 0; i < mt.num_tets(); ++i) {
-    const TetId t(i);
-    if (!mt.alive(t) || mt.death(t) == mt.drain()) continue;
-    uf.unite(tet_node(t), frag_node(mt.death(t)));
+  for (std::size_t f = 0; f < mt.num_fragments(); ++f) {
+    if (FragId(f) == mt.drain()) continue;
+    const std::span<const TetId> created = mt.created(FragId(f));
+    const bool root = FragId(f) == mt.root();
+    for (std::size_t i = 0; i < created.size(); ++i) {
+      const FragId death = mt.death(created[i]);
+      if (death == mt.drain()) continue;
+      uf.unite(static_cast<std::int32_t>(root ? i : n_fine + f), static_cast<std::int32_t>(n_fine + death.index()));
+    }
   }
+  return uf;
+}
 
+}  // namespace
+
+MtPieces find_pieces(const Mt& mt) {
+  UnionFind uf = join_pieces(mt);
+  const std::size_t n_fine = mt.created(mt.root()).size();
+  const auto node = [&](TetId t) {
+    return static_cast<std::int32_t>(mt.birth(t) == mt.root() ? mt.birth_slot(t) : n_fine + mt.birth(t).index());
+  };
+  // Numbered in ascending order of the tet ids of the finest tets.
   MtPieces pieces;
   std::vector<std::int32_t> piece_of_root(uf.parent.size(), -1);
-  for (std::size_t i = 0; i < n_fine; ++i) {
-    const auto r = static_cast<std::size_t>(uf.find(static_cast<std::int32_t>(i)));
+  for (std::size_t i = 0; i < mt.num_tets(); ++i) {
+    const TetId t(i);
+    if (!mt.alive(t) || mt.birth(t) != mt.root()) continue;
+    const auto r = static_cast<std::size_t>(uf.find(node(t)));
     if (piece_of_root[r] < 0) {
       piece_of_root[r] = static_cast<std::int32_t>(pieces.count++);
       pieces.finest_tets.push_back(0);
@@ -75,15 +82,25 @@ MtPieces find_pieces(const Mt& mt) {
   pieces.fragment_piece.assign(mt.num_fragments(), -1);
   for (std::size_t f = 0; f < mt.num_fragments(); ++f) {
     if (FragId(f) == mt.root() || FragId(f) == mt.drain()) continue;
-    const std::int32_t p = piece_of_root[static_cast<std::size_t>(uf.find(frag_node(FragId(f))))];
+    const std::int32_t p = piece_of_root[static_cast<std::size_t>(uf.find(static_cast<std::int32_t>(n_fine + f)))];
     pieces.fragment_piece[f] = p;
     if (p >= 0) pieces.fragments[static_cast<std::size_t>(p)].emplace_back(f);
   }
   pieces.tet_piece.assign(mt.num_tets(), -1);
   for (std::size_t i = 0; i < mt.num_tets(); ++i)
     if (mt.alive(TetId(i)))
-      pieces.tet_piece[i] = piece_of_root[static_cast<std::size_t>(uf.find(tet_node(TetId(i))))];
+      pieces.tet_piece[i] = piece_of_root[static_cast<std::size_t>(uf.find(node(TetId(i))))];
   return pieces;
+}
+
+std::size_t count_pieces(const Mt& mt) {
+  // A component's root is its smallest node (UnionFind::unite), a finest
+  // tet's when it holds one: fragment nodes come after them.
+  UnionFind uf = join_pieces(mt);
+  std::size_t count = 0;
+  const std::size_t n_fine = mt.created(mt.root()).size();
+  for (std::size_t i = 0; i < n_fine; ++i) count += uf.parent[i] == static_cast<std::int32_t>(i);
+  return count;
 }
 
 std::vector<double> piece_volumes(const Mt& mt, const MtPieces& pieces) {

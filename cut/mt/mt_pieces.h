@@ -42,10 +42,13 @@ struct MtPieces {
 
 // Numbered in the order of their first finest tet (ascending tet ids).
 MtPieces find_pieces(const Mt& mt);
+// find_pieces(mt).count, without the labels: a pass over the live tets and
+// the vertices only (what the cutter reports after a cut).
+std::size_t count_pieces(const Mt& mt);
 
 // (pieces.count) the volume of each piece's finest mesh. Apart from
-// find_pieces, which the cutter runs after every cut: the volumes were 40%
-// of it, and the World needs only the labels.
+// find_pieces, which the World's outputs run after cuts: the volumes were 40%
+// of it, and the outputs need only the labels.
 std::vector<double> piece_volumes(const Mt& mt, const MtPieces& pieces);
 
 // Every arc (live tet) within one piece, root and drain apart; counts agree.

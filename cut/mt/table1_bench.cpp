@@ -52,7 +52,7 @@ Table1Result run_table1(const engine::Mt& mt, const Table1Def& def) {
         row.split_fragments = r.counts.split_fragments;
         row.split_tets = r.counts.split_tets + r.counts.relabeled_tets;
         row.new_tets_lut = r.counts.new_tets;
-        row.pieces = find_pieces(copy).count;
+        row.pieces = count_pieces(copy);
         continue;
       }
       const double split = 1e3 * (r.counts.find_seconds + r.counts.split_seconds);

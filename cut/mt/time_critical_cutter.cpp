@@ -495,7 +495,7 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     if (a.provisional) held_ = std::move(a.tx);
     active_.reset();  // `a` is gone from here
     if (def_.report_pieces && pieces_stale_ && !front_open) {
-      result.pieces = find_pieces(mt);
+      result.pieces = count_pieces(mt);
       pieces_stale_ = false;
     }
   }

@@ -75,7 +75,7 @@ struct CutBudget {
 struct TimeCriticalCutterDef {
   MtCutDef cut;
   bool visible_at_once = true;  // a call that starts a cut's visible jobs finishes them
-  bool report_pieces = true;    // find_pieces() when a cut completes (costs a pass over the MT)
+  bool report_pieces = true;    // count_pieces() when a cut completes (costs a pass over the MT)
 };
 
 struct CutterProgress {
@@ -164,7 +164,7 @@ class TimeCriticalCutter {
   struct RunResult {
     MtChangeReport changes;          // of the cuts kept (and of the one in progress)
     std::size_t cuts_finished = 0;   // kept or refused
-    std::optional<MtPieces> pieces;  // after the last cut this call finished
+    std::optional<std::size_t> pieces;  // how many, after the last cut this call finished (count_pieces)
     // A cut that check_cut (cut_guard.h) refused when it finished, taken
     // back: the call stops there, and the caller maps its frontier through
     // the retraction (follow_retraction) after following `changes`.

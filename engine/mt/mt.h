@@ -65,6 +65,8 @@ class Mt {
   const Tet& tet(TetId t) const { return tet_verts_[t.index()]; }
   FragId birth(TetId t) const { return tet_birth_[t.index()]; }
   FragId death(TetId t) const { return tet_death_[t.index()]; }
+  // Where t is in created(birth(t)).
+  std::size_t birth_slot(TetId t) const { return static_cast<std::size_t>(tet_birth_slot_[t.index()]); }
   float error(TetId t) const { return tet_error_[t.index()]; }
   // The error was given (a cut piece's is its split tet's), not computed from the corners.
   bool error_inherited(TetId t) const { return tet_error_inherited_[t.index()] != 0; }

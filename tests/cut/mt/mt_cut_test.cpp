@@ -28,6 +28,7 @@ void check_after_cut(const Mt& mt, const std::vector<CutPolygon>& cuts, const st
   const auto pieces = cut::find_pieces(mt);
   const auto piece_report = cut::validate_pieces(mt, pieces);
   ASSERT_TRUE(piece_report.ok()) << where << ": " << piece_report.summary();
+  EXPECT_EQ(cut::count_pieces(mt), pieces.count) << where;
   double pieces_volume = 0;
   for (double v : cut::piece_volumes(mt, pieces)) pieces_volume += v;
   EXPECT_NEAR(pieces_volume, mt.fine_volume(), 1e-9 * mt.fine_volume()) << where;
@@ -223,6 +224,7 @@ TEST(MtCut, SeparatingCutGivesTwoValidPieces) {
     const auto pieces = cut::find_pieces(mt);
     ASSERT_TRUE(cut::validate_pieces(mt, pieces).ok()) << name;
     ASSERT_EQ(pieces.count, 2u) << name;
+    EXPECT_EQ(cut::count_pieces(mt), 2u) << name;
     const std::vector<double> volumes = cut::piece_volumes(mt, pieces);
     double sum = 0;
     for (std::size_t p = 0; p < pieces.count; ++p) {
