@@ -190,7 +190,7 @@ class World {
   // The blade's ends at the part's last cut (world space): a recorded part
   // grows by the sweep from there (run_cut_stage).
   std::vector<Vec3> part_cut_blade_;
-  std::size_t pieces_ = 1;
+  std::size_t pieces_ = 0;  // counted when the World is made, then as the cutter reports them
   std::size_t cut_vertices_ = 0;  // FrameMetrics::cut_vertices
   std::vector<StrokeRecord> strokes_;
   ScalpelPose last_pose_;

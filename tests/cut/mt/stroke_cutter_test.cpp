@@ -18,8 +18,6 @@
 namespace mtcut::test {
 namespace {
 
-// A blade pose at s in [0, 1] of a stroke.
-
 struct StrokeOutcome {
   Mt mt;
   std::size_t pieces = 0;
