@@ -15,7 +15,9 @@
 //                (cut/mt/cut_retraction.h says why), so the incision opens
 //                behind the blade in the frame it passes. Polygons go from
 //                the deformed tissue to rest space (rest_space_cut.h says
-//                why); the time-critical cutter runs within its budget, the
+//                why); the time-critical cutter runs within its budget (a
+//                part's frame, its commit and front, whole: the mesh shown
+//                conforms in every frame, TimeCriticalCutter::run), the
 //                frontier follows the fragments it split and, when its tets
 //                changed, the springs on it start building (taken in stage
 //                3, the state carried over, cut vertices from their parents

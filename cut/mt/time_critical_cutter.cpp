@@ -130,6 +130,10 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     std::optional<CutPolygon> fallback;
     if (part_) {
       fallback = part_->last;
+      // A frame of the part left queued (an earlier cut spent the budget)
+      // never ran: the end cuts what it would have, and falls back to the
+      // polygon of the last frame that ran (none: no commit to owe).
+      drop_queued_frame(*part_->record, fallback);
       if (const std::optional<CutPolygon> on = on_part_plane(*part_, here())) part_->last = *on;
       polygon = part_->last;
       record = part_->record;
@@ -299,12 +303,20 @@ void TimeCriticalCutter::submit_ended(const CutPolygon& polygon, std::shared_ptr
 
 void TimeCriticalCutter::submit_part(const Part& part, std::optional<CutPolygon> grown_from) {
   if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
+  // This frame grows from where a frame of the part left queued would have.
+  drop_queued_frame(*part.record, grown_from);
   queue_.push_back({.polygon = part.last,
                     .record = part.record,
                     .select = CutSelect::kComplete,
                     .grown_from = std::move(grown_from),
                     .stroke = true});
   queue_provisional({.polygon = part.last, .record = part.record, .select = CutSelect::kFront, .stroke = true});
+}
+
+void TimeCriticalCutter::drop_queued_frame(const PartRecord& record, std::optional<CutPolygon>& grown_from) {
+  if (queue_.empty() || queue_.back().record.get() != &record || queue_.back().select != CutSelect::kComplete) return;
+  grown_from = std::move(queue_.back().grown_from);
+  queue_.pop_back();
 }
 
 void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {
@@ -392,9 +404,22 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     return spent >= budget.work || ms >= budget.milliseconds;
   };
+  // A part's frame, its commit and its front (part_record.h), is cut
+  // whole in the call that reaches it, whatever the budget: the commit
+  // leaves the tets the outline passes through whole beside pieces that
+  // split their faces, a mesh that conforms only once the front has split
+  // them (at every resolution: the commit's jobs spread over calls would
+  // show that mesh), and only the front's check covers the commit's edges
+  // (cut_guard.h). A frame's work is what the blade swept since the last
+  // frame and the blade's own tets; the budget spreads cuts for good (a
+  // part's end, a submitted polygon) and the provisional cut of a part
+  // with no record.
+  const auto in_frame = [](const std::shared_ptr<PartRecord>& record, CutSelect select) {
+    return record && select != CutSelect::kAll;
+  };
   while (active_ || !queue_.empty()) {
     if (!active_) {
-      if (over_budget()) break;
+      if (over_budget() && !in_frame(queue_.front().record, queue_.front().select)) break;
       start_next(mt, bvh, frontier);
       result.changes.counts.find_seconds += active_->cut->find_seconds();
     }
@@ -402,7 +427,7 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     MtChangeReport call;  // this call's changes of the active cut
     while (a.next < a.order.size()) {
       const bool in_visible = a.next < a.visible && a.next > 0;
-      if (!(def_.visible_at_once && in_visible) && over_budget()) break;
+      if (!(def_.visible_at_once && in_visible) && !in_frame(a.record, a.select) && over_budget()) break;
       const std::size_t job = a.order[a.next++];
       spent += a.cut->job_cost(mt, job);
       MtChangeReport changes;
@@ -538,13 +563,6 @@ void TimeCriticalCutter::take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_
   }
   record->take_back(frame.commit ? &frame.commit->changes : nullptr, std::move(frame.before));
   searched_.reset();
-  if (!queue_.empty() || provisional_held()) {
-    // A later frame is queued already (a budget left this one's jobs for
-    // later calls): it is cut against the record as it is now, searching
-    // all its polygon crosses.
-    record->set_front(std::nullopt);
-    return;
-  }
   if (!frame.previous) return;  // the part's first frame: nothing was cut before it
   if (part_ && part_->record.get() == record.get()) part_->last = *frame.previous;
   // The last frame's front again: the caller runs the cutter once more

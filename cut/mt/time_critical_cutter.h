@@ -42,7 +42,10 @@
 //
 // Budgets are work units (tets split or relabelled, plus one per job: the
 // same on every machine, so runs are reproducible) and/or milliseconds;
-// every call does at least one job when any is pending.
+// every call does at least one job when any is pending. A part's frame
+// (its commit and its front) is cut whole in the call that reaches it,
+// whatever the budget (run()): the budget spreads cuts for good and the
+// provisional cut of a part with no record.
 
 #include <array>
 #include <cstdint>
@@ -260,6 +263,13 @@ class TimeCriticalCutter {
   // Queues the part's frame: its committed tets, then its front
   // provisionally.
   void submit_part(const Part& part, std::optional<CutPolygon> grown_from = std::nullopt);
+  // Takes off the queue a frame of the part that `record` keeps, left
+  // there by a budget that an earlier cut spent (retract() dropped its
+  // front): run later, its commit would be kept with no front to check it
+  // and make the mesh conform (run()). `grown_from` receives the polygon
+  // it grew from (none: the part's first frame); untouched when no frame
+  // of the part is queued.
+  void drop_queued_frame(const PartRecord& record, std::optional<CutPolygon>& grown_from);
   // The pivot where `next` goes on from `previous` across a gentle turn, if it does.
   static std::optional<Pivot> pivot_between(const CutPolygon& previous, const CutPolygon& next);
   // The edge of `previous` where `next` goes on from it (the blade where

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "engine/mesh_loader.h"
+#include "engine/mt/frontier.h"
 #include "engine/mt/mt_builder.h"
 
 namespace mtcut::sim {
@@ -110,6 +111,18 @@ ScalpelPath flap_stroke(double seconds) {
   return ScalpelPath(keys);
 }
 
+// The flap stroke's poses in one frame (a trace sampled slower than the
+// blade moves, or a script's whole stroke): its polygon is one cut for
+// good, which a budget spreads over the frames after it (a part cut
+// progressively is cut frame by frame, each frame whole:
+// TimeCriticalCutter::run). Then the blade stays away, disengaged.
+std::vector<ScalpelPose> flap_in_one_frame() {
+  return {{Vec3(0.04, -0.06, 0.06), Vec3(0.04, -0.06, -0.07), true},
+          {Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), true},
+          {Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), false}};
+}
+const ScalpelPose kAway{Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), false};
+
 WorldDef flap_def() {
   WorldDef def = organ_def();
   def.environment.floor = Plane{Vec3(0, 0, 1), -0.05};
@@ -184,7 +197,7 @@ TEST(World, StrokeCutsOffAFlapThatFallsToTheFloor) {
 }
 
 TEST(World, TinyCutBudgetEndsWithTheSameMtAndFreezesTheFrontier) {
-  const ScalpelPath path = flap_stroke(0.3);
+  const std::vector<ScalpelPose> stroke = flap_in_one_frame();
   // On the finest frontier only the root is visible: every other
   // fragment's job waits for later frames under a small budget.
   WorldDef def = flap_def();
@@ -194,10 +207,11 @@ TEST(World, TinyCutBudgetEndsWithTheSameMtAndFreezesTheFrontier) {
   World unlimited(organ_mt(2000), def), tiny(organ_mt(2000), tiny_def);
   int frozen_frames = 0;
   for (int f = 0; f < 80; ++f) {
-    unlimited.step(path.pose_at(unlimited.time()));
+    const std::span<const ScalpelPose> poses = f == 0 ? std::span(stroke) : std::span(&kAway, 1);
+    unlimited.step(poses);
     const std::size_t tets_before = tiny.frontier().tets().size();
     const std::uint64_t version = tiny.frontier().version();
-    const FrameMetrics& m = tiny.step(path.pose_at(tiny.time()));
+    const FrameMetrics& m = tiny.step(poses);
     if (m.frozen) {
       ++frozen_frames;
       EXPECT_EQ(m.lod_changes, 0u);
@@ -564,11 +578,38 @@ TEST(World, SpringsUpdatedByEachChangeGiveTheFullBuildsBits) {
   expect_same_runs(update_def, build_def);
 }
 
+// A stroke cut progressively under a small budget: each frame's part is cut
+// whole (its commit and its front), so the mesh the World simulates
+// conforms in every frame, frozen or not, and the cut is the same as
+// without a budget.
+TEST(World, AProgressiveStrokeUnderASmallBudgetConformsInEveryFrame) {
+  const ScalpelPath path = flap_stroke(0.3);
+  WorldDef def = flap_def();
+  def.lod.enabled = false;
+  WorldDef tiny_def = def;
+  tiny_def.cut_budget = {CutBudgetDef::Unit::kTets, 5};
+  World unlimited(organ_mt(2000), def), tiny(organ_mt(2000), tiny_def);
+  std::size_t cut_frames = 0;
+  for (int f = 0; f < 80; ++f) {
+    unlimited.step(path.pose_at(unlimited.time()));
+    const FrameMetrics& m = tiny.step(path.pose_at(tiny.time()));
+    cut_frames += m.cut_tets > 0;
+    const auto frontier = engine::validate_frontier(tiny.mt(), tiny.frontier());
+    ASSERT_TRUE(frontier.ok()) << "frame " << f << ": " << frontier.summary();
+    const auto report = m.frozen ? tiny.cutter().validate(tiny.mt()) : tiny.validate();
+    ASSERT_TRUE(report.ok()) << "frame " << f << ": " << report.summary();
+  }
+  EXPECT_GT(cut_frames, 10u);  // cut frame by frame
+  EXPECT_FALSE(tiny.cutter().frozen());
+  EXPECT_TRUE(mt_contents(tiny.mt()) == mt_contents(unlimited.mt()));
+  EXPECT_EQ(tiny.pieces(), 2u);
+}
+
 // Under a small budget the jobs of hidden fragments run in later frames.
 // They change no tet of the frontier, so those frames keep the springs and
 // the state; a frame whose frontier changed builds them once.
 TEST(World, FramesThatOnlyCutHiddenFragmentsKeepTheSprings) {
-  const ScalpelPath path = flap_stroke(0.3);
+  const std::vector<ScalpelPose> stroke = flap_in_one_frame();
   WorldDef def = flap_def();
   def.lod.enabled = false;  // the finest frontier: only the root is visible
   def.cut_budget = {CutBudgetDef::Unit::kTets, 5};
@@ -576,7 +617,7 @@ TEST(World, FramesThatOnlyCutHiddenFragmentsKeepTheSprings) {
   int hidden_only = 0, built = 0;
   for (int f = 0; f < 80; ++f) {
     const std::vector<TetCorners> before = frontier_contents(world.mt(), world.frontier());
-    const FrameMetrics& m = world.step(path.pose_at(world.time()));
+    const FrameMetrics& m = world.step(f == 0 ? std::span(stroke) : std::span(&kAway, 1));
     const bool mesh_changed = frontier_contents(world.mt(), world.frontier()) != before;
     EXPECT_EQ(m.springs_built, mesh_changed ? 1 : 0) << "frame " << f;
     EXPECT_EQ(world.model().num_particles(), world.frontier().vertices().size()) << "frame " << f;
