@@ -35,7 +35,6 @@ TEST(BenchTable1, ReportsEveryRowBesideThePapers) {
     EXPECT_GT(row["split_fragments"].get<int>(), 0);
     EXPECT_GT(row["new_tets_bielser17"].get<int>(), row["new_tets_lut"].get<int>());
     EXPECT_GE(row["new_tets_lut"].get<int>(), row["split_tets"].get<int>());
-    EXPECT_GE(row["total_ms"].get<double>(), row["split_ms"].get<double>());
   }
   // Partial cuts keep the object whole; the last, largest cut separates it.
   for (std::size_t i = 0; i + 1 < rows.size(); ++i) EXPECT_EQ(rows[i]["pieces"].get<int>(), 1) << i;

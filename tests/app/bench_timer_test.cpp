@@ -15,8 +15,6 @@ TEST(BenchTimer, PairedBatchesAlternate) {
   EXPECT_EQ(order, "ababababab");
   EXPECT_EQ(t.a.batches, 4);
   EXPECT_EQ(t.b.batches, 4);
-  EXPECT_LE(t.a.min_seconds, t.a.median_seconds);
-  EXPECT_LE(t.a.median_seconds, t.a.max_seconds);
   EXPECT_GT(t.a_over_b, 0.0);
 }
 

@@ -184,7 +184,6 @@ TEST(HidFeed, AnUnplugMidStrokeIsToldOnceDisengagesAndTheWorldRunsOn) {
   // Every sample up to the last frame's time reached the World, with a latency.
   const LatencySummary latency = feed.latency();
   EXPECT_GT(latency.count, 0);
-  EXPECT_GE(latency.median_ms, 0.0);
 }
 
 }  // namespace

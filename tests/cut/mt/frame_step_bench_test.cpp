@@ -23,11 +23,8 @@ TEST(FrameStepBench, DashedStrokeMakesSmallCutsAndLeavesAValidMt) {
     const cut::FrameStepResult r = cut::run_frame_steps(mt, def, &after);
     EXPECT_EQ(r.steps, static_cast<std::size_t>(def.steps)) << name;
     EXPECT_GT(r.split_tets_median, 0u) << name;
-    EXPECT_LE(r.split_tets_median, r.split_tets_max) << name;
     EXPECT_LT(r.split_tets_max, mt.num_live_tets() / 10) << name;
     EXPECT_GT(r.new_tets_median, r.split_tets_median) << name;
-    EXPECT_LE(r.ms_median, r.ms_p90) << name;
-    EXPECT_LE(r.ms_p90, r.ms_max) << name;
     const auto report = after.validate();
     EXPECT_TRUE(report.ok()) << name << ": " << report.summary();
     EXPECT_EQ(cut::find_pieces(after).count, 1u) << name;

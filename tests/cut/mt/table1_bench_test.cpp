@@ -22,7 +22,6 @@ TEST(Table1Bench, RowsHaveThePapersShape) {
   for (const auto& row : result.rows) {
     EXPECT_GT(row.split_tets, 0u);
     EXPECT_LT(row.new_tets_lut, row.new_tets_bielser17);
-    EXPECT_GE(row.total_ms, row.split_ms);
   }
   EXPECT_EQ(result.rows[4].pieces, 2u);
   EXPECT_EQ(result.rows[0].pieces, 1u);
