@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cut/mt/time_critical_cutter.h"
+#include "cut/mt/follow_cut.h"
 #include "engine/predicates.h"
 #include "engine/tet_adjacency.h"
 #include "engine/tet_geometry.h"

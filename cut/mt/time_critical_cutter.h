@@ -57,6 +57,7 @@
 #include <vector>
 
 #include "cut/mt/cut_retraction.h"
+#include "cut/mt/follow_cut.h"
 #include "cut/mt/mt_cut.h"
 #include "cut/mt/mt_pieces.h"
 #include "cut/mt/part_record.h"
@@ -369,16 +370,5 @@ class TimeCriticalCutter {
   CutterProgress totals_;
   std::size_t refused_ = 0;
 };
-
-// S mapped through fragment splits (in order): every part of a fragment in S is in S.
-std::vector<FragId> map_fragment_set(std::span<const FragId> fragments, std::span<const FragmentSplit> splits);
-// The frontier of the mapped set, rebuilt over the MT as it is now (its
-// tets, vertices and visible fragments follow the split tets).
-Frontier map_frontier(const Mt& mt, const Frontier& frontier, std::span<const FragmentSplit> splits);
-// The same frontier as map_frontier(mt, frontier, changes.fragment_splits),
-// reached in place from what `changes` says the cut did (Frontier::follow_edit):
-// costs the tets the cut killed and made, not a pass over the MT. What the
-// World does after every run().
-void follow_cut(const Mt& mt, Frontier& frontier, const MtChangeReport& changes);
 
 }  // namespace mtcut::cut
