@@ -168,14 +168,10 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   if (!recut && !cutter_.frozen()) return;
   take_lod_move(m);  // the MT is about to change
   DeformationSnapshot snapshot = take_snapshot(mt_, frontier_, model_, state_);
-  // The provisional cut's vertices by key: the same point made again takes
-  // their state (an incision that has opened stays open).
+  // The vertices a retraction left unused, by key: the same point made
+  // again takes their state (an incision that has opened stays open).
   absl::flat_hash_map<cut::PointKey, VertId, cut::PointKeyHash> provisional_points;
   if (recut) {
-    if (const cut::MtChangeReport* held = cutter_.provisional_changes()) {
-      for (const cut::MadeVertex& made : held->made_vertices) provisional_points.emplace(made.key, made.id);
-      cut_vertices_ -= held->made_vertices.size();  // retracted below: unused from now on
-    }
     // Cut in rest space (rest_space_cut.h says why).
     std::vector<Vec3> rest(model_.num_particles());
     for (std::size_t p = 0; p < rest.size(); ++p) rest[p] = mt_.position(model_.particle_vertex[p]);
@@ -207,6 +203,8 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
     if (const auto retraction =
             cutter_.recut(mt_, bvh_, advance.ended, advance.turned_back, current, stroke_.plane_fixed())) {
       cut::follow_retraction(mt_, frontier_, *retraction);
+      for (const cut::MadeVertex& made : retraction->unused) provisional_points.emplace(made.key, made.id);
+      cut_vertices_ -= retraction->unused.size();
       if (m.cuts_started == 0 && retraction->fragments_removed > 0)
         pieces_ = cut::count_pieces(mt_);  // the stroke left nothing to cut
     }

@@ -143,6 +143,11 @@ FragId pinching_fragment(const Mt& mt, const Stars& stars, VertId a, VertId b,
 
 }  // namespace
 
+const FragmentLedger* ledger_checked(const PartRecord* part) {
+  static const FragmentLedger kNothingOwed;
+  return !part || part->num_owned() == 0 ? &kNothingOwed : part->met_old_crack() ? &part->owed() : nullptr;
+}
+
 engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
                                    std::size_t first_cut_vertex, std::size_t first_new_vertex, const PartRecord* part,
                                    CutSelect select, const FrameCommit* commit) {
@@ -200,10 +205,7 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   // front splits (the ledger enters the parts by what their tets sum to),
   // so its front's check is theirs.
   const std::vector<FragId> decomposed = decomposed_fragments(cut);
-  static const FragmentLedger kNothingOwed;
-  const FragmentLedger* owed = !part || part->num_owned() == 0 ? &kNothingOwed
-                               : part->met_old_crack()           ? &part->owed()
-                                                                 : nullptr;
+  const FragmentLedger* owed = ledger_checked(part);
   if (select != CutSelect::kComplete && owed) {
     for (FragId f : owed->unbalanced_with(mt, cut, decomposed))
       report.add("cut: fragment " + std::to_string(f.value) +

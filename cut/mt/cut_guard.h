@@ -60,6 +60,14 @@ struct FrameCommit {
   std::size_t first_new_vertex = 0;  // its own vertices from here on
 };
 
+// The ledger a cut of `part` (none: not a part's) is checked against, its
+// fragments' balance with it (fragment_ledger.h): nothing owed for a cut
+// that is not a part's or for a part that has committed nothing yet, the
+// part's ledger once it has met an older crack, else none (nullptr: no
+// balance check; a part's cuts through tets no cut had touched conform by
+// construction). A check against a ledger sums the part's whole front.
+const FragmentLedger* ledger_checked(const PartRecord* part);
+
 // `cut`: everything the finished cut changed; vertices from `first_cut_vertex`
 // on were made by cuts (earlier ones and this), the cut's own from
 // `first_new_vertex` on. `part`: the cut is a frame of a stroke's part cut

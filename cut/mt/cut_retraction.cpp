@@ -1,5 +1,6 @@
 #include "cut/mt/cut_retraction.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -89,7 +90,71 @@ CutRetraction retract_cut(engine::Mt& mt, engine::TetBvh& bvh, const MtChangeRep
     mt.remove_last_fragment();
     ++out.fragments_removed;
   }
+  out.unused = cut.made_vertices;
   return out;
+}
+
+CutRetraction retract_replacements(engine::Mt& mt, engine::TetBvh& bvh, MtChangeReport& cut,
+                                   std::span<const std::uint8_t> take) {
+  if (!cut.fragment_splits.empty()) throw std::logic_error("retract_replacements: the cut decomposed fragments");
+  if (take.size() != cut.replaced.size()) throw std::logic_error("retract_replacements: one flag per replacement");
+  CutRetraction out;
+  MtChangeReport kept;
+  kept.made_vertices = std::move(cut.made_vertices);
+  for (std::size_t i = 0; i < cut.replaced.size(); ++i) {
+    TetReplacement r = cut.replaced[i];
+    const std::span<const TetId> pieces(cut.made_tets.data() + r.first, r.count);
+    if (!take[i]) {
+      r.first = static_cast<std::uint32_t>(kept.made_tets.size());
+      kept.made_tets.insert(kept.made_tets.end(), pieces.begin(), pieces.end());
+      kept.replaced.push_back(r);
+      continue;
+    }
+    if (mt.alive(r.old) || pieces.empty()) throw std::logic_error("retract_replacements: a replaced tet is alive");
+    const FragId birth = mt.birth(pieces.front()), death = mt.death(pieces.front());
+    for (TetId t : pieces) {
+      if (!mt.alive(t)) throw std::logic_error("retract_replacements: a piece is dead");
+      if (mt.birth(t) != birth || mt.death(t) != death)
+        throw std::logic_error("retract_replacements: the pieces of one tet are in different fragments");
+      bvh.remove(t);
+      mt.kill_tet(t);
+      out.killed.push_back(t);
+    }
+    mt.revive_tet(r.old, birth, death);
+    bvh.insert(mt, r.old);
+    out.revived.push_back(r.old);
+  }
+  // Made vertices that no piece left uses.
+  std::vector<VertId> used;
+  for (TetId t : kept.made_tets)
+    for (VertId v : mt.tet(t)) used.push_back(v);
+  std::sort(used.begin(), used.end());
+  std::vector<MadeVertex> made;
+  for (MadeVertex& m : kept.made_vertices)
+    (std::binary_search(used.begin(), used.end(), m.id) ? made : out.unused).push_back(std::move(m));
+  kept.made_vertices = std::move(made);
+  cut = std::move(kept);
+  return out;
+}
+
+engine::ValidationReport validate_replacements(const engine::Mt& mt, const MtChangeReport& cut) {
+  engine::ValidationReport report;
+  if (!cut.fragment_splits.empty()) report.add("retraction: a provisional cut decomposed fragments");
+  for (const TetReplacement& r : cut.replaced) {
+    if (mt.alive(r.old)) report.add("retraction: replaced tet " + std::to_string(r.old.value) + " is alive");
+    if (r.count == 0 || r.first + r.count > cut.made_tets.size()) {
+      report.add("retraction: replaced tet " + std::to_string(r.old.value) + " has pieces out of range");
+      continue;
+    }
+    const TetId first = cut.made_tets[r.first];
+    for (std::uint32_t k = 0; k < r.count; ++k) {
+      const TetId t = cut.made_tets[r.first + k];
+      if (!mt.alive(t)) report.add("retraction: piece " + std::to_string(t.value) + " is dead");
+      else if (mt.alive(first) && (mt.birth(t) != mt.birth(first) || mt.death(t) != mt.death(first)))
+        report.add("retraction: the pieces of tet " + std::to_string(r.old.value) + " are in different fragments");
+    }
+  }
+  return report;
 }
 
 std::vector<FragId> retract_fragment_set(const engine::Mt& mt, std::span<const FragId> fragments,

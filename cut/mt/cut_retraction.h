@@ -35,6 +35,10 @@ struct CutRetraction {
   // it was a part of (whose id survives).
   std::vector<std::pair<FragId, FragId>> merged;
   std::size_t fragments_removed = 0;
+  // The vertices the cut made that none of its pieces left uses (a point a
+  // later cut took too, such as a part's commit, is still used by that
+  // cut's pieces: the time-critical cutter drops those from the list).
+  std::vector<MadeVertex> unused;
 };
 
 // Undoes `cut`, every change a provisional cut made (all its calls' reports
@@ -46,6 +50,24 @@ struct CutRetraction {
 // (a piece already killed by something else, a part that still holds tets).
 CutRetraction retract_cut(engine::Mt& mt, engine::TetBvh& bvh, const MtChangeReport& cut,
                           std::size_t fragments_before, const engine::TetBvh::Mark* bvh_mark = nullptr);
+
+// Takes back the replacements of a provisional cut (one that decomposed
+// no fragment) that `take` marks (one entry per cut.replaced), tet by tet,
+// and drops them from `cut`, with the made vertices no piece left uses
+// (the retraction's `unused`) and its processed fragments and counts: what
+// is left is what it holds.
+// Later cuts may have edited the MT since (a part's commits, which may
+// decompose the fragments its pieces are in): each tet revived goes back
+// to the fragments its pieces are in now, one birth and one death, as a
+// split that does not separate its tet leaves them. Throws
+// std::logic_error when the cut decomposed a fragment, a piece is dead, or
+// the pieces of one tet are in different fragments.
+CutRetraction retract_replacements(engine::Mt& mt, engine::TetBvh& bvh, MtChangeReport& cut,
+                                   std::span<const std::uint8_t> take);
+
+// What retract_replacements needs: no fragment decomposed, every replaced
+// tet dead, its pieces alive and in one birth and one death fragment.
+engine::ValidationReport validate_replacements(const engine::Mt& mt, const MtChangeReport& cut);
 
 // S after a retraction: every removed part replaced by the fragment it was
 // a part of, then closed under parents (a part that the level of detail had

@@ -87,7 +87,7 @@ std::vector<FragId> fragments_out_of_balance(const Mt& mt, const MtChangeReport&
   return FragmentLedger().unbalanced_with(mt, cut, decomposed_fragments(cut));
 }
 
-void FragmentLedger::add(const Mt& mt, const MtChangeReport& cut) {
+void FragmentLedger::add(const Mt& mt, const MtChangeReport& cut, const MtChangeReport* held) {
   add_cut(sums_, mt, cut, {});
   if (!cut.fragment_splits.empty()) {
     // A decomposed fragment's parts (and a part split again) form a group.
@@ -119,10 +119,27 @@ void FragmentLedger::add(const Mt& mt, const MtChangeReport& cut) {
       else
         ++it;
     }
+    std::vector<FragId> whole;
     for (const auto& [f, root] : group) {
       const auto it = unbalanced.find(find(f));
       if (it != unbalanced.end() && it->second && FragId(f) != mt.root() && FragId(f) != mt.drain())
-        add_whole(sums_, mt, FragId(f));
+        whole.emplace_back(f);
+    }
+    std::sort(whole.begin(), whole.end());
+    for (FragId f : whole) add_whole(sums_, mt, f);
+    if (held) {  // the held splits in those fragments, taken out of their sums
+      const auto in_whole = [&](FragId f) { return std::binary_search(whole.begin(), whole.end(), f); };
+      for (const TetReplacement& r : held->replaced) {
+        std::array<std::pair<FragId, int>, 2> sides{{{FragId(), 1}, {FragId(), -1}}};
+        if (in_whole(r.birth)) sides[0].first = r.birth;
+        if (in_whole(r.death)) sides[1].first = r.death;
+        if (!sides[0].first.valid() && !sides[1].first.valid()) continue;
+        add_faces(sums_, mt, mt.tet(r.old), mt.boundary_mask(r.old), sides, 1, {});
+        for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {
+          const TetId t = held->made_tets[i];
+          add_faces(sums_, mt, mt.tet(t), mt.boundary_mask(t), sides, -1, {});
+        }
+      }
     }
   }
   drop_zeros(sums_);

@@ -51,7 +51,11 @@ class FragmentLedger {
   // A fragment the cut decomposed, and its parts, leave the ledger when
   // they balance; else they are entered by what their tets sum to (a pass
   // over their tets, as the decomposition was).
-  void add(const Mt& mt, const MtChangeReport& cut);
+  // `held`: a part's front the cut ran beside (provisional splits kept in
+  // the MT, their replacements naming the fragments their pieces are in
+  // now): a fragment entered by what its tets sum to is entered as if they
+  // were whole, so that the ledger stays what the commits owe.
+  void add(const Mt& mt, const MtChangeReport& cut, const MtChangeReport* held = nullptr);
 
   // The fragments (not the root, the drain or in `skip`, which is sorted)
   // that stay out of balance once `cut` is added, sorted. With an empty

@@ -31,6 +31,10 @@ struct TetReplacement {
   FragId birth, death;    // old's fragments when it was killed (what a retraction restores)
   std::uint32_t first;    // offset of its pieces in MtChangeReport::made_tets
   std::uint32_t count;    // number of pieces
+  // The configuration its split was made from (TetConfig::key; 0 for a
+  // relabel): a part's front keeps a split whose configuration the grown
+  // polygon leaves as it was (TimeCriticalCutter::recut).
+  std::uint32_t config = 0;
 };
 
 // A vertex the cut made. rest = sum weights[i] * rest(parents[i]); the

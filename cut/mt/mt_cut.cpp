@@ -98,6 +98,28 @@ void cover_committed_edges(const Tet& tet, const PartRecord& record, TetConfig& 
 
 }  // namespace
 
+std::vector<std::uint8_t> kept_front_splits(const Mt& mt, const MtChangeReport& front, const CutPolygon& polygon,
+                                            const PartRecord& record, double snap, double reach,
+                                            CutClassifier::Scratch* scratch) {
+  std::vector<std::uint8_t> keep(front.replaced.size(), 0);
+  CutClassifier classifier(polygon, mt.positions(), ClassifierDef{snap}, scratch);
+  classifier.expect_candidates(front.replaced.size());
+  for (const TetReplacement& r : front.replaced) classifier.add_candidate(mt.tet(r.old));
+  classifier.finalize();
+  for (std::size_t i = 0; i < front.replaced.size(); ++i) {
+    const TetReplacement& r = front.replaced[i];
+    if (r.config == 0) continue;
+    const Tet& tet = mt.tet(r.old);
+    if (std::any_of(tet.begin(), tet.end(),
+                    [&](VertId v) { return std::abs(polygon.signed_distance(mt.position(v))) <= reach; }))
+      continue;
+    TetConfig config = classifier.configure(tet);
+    cover_committed_edges(tet, record, config);
+    keep[i] = config.is_cut() && !crossed_completely(config) && config.key() == r.config;
+  }
+  return keep;
+}
+
 MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::span<const Vec3> geometry,
              const MtCutDef& def, SplitTable& table, MtCutWorkspace* workspace)
     : polygon_(polygon),
@@ -220,9 +242,10 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
       for (VertId v : tet) left_whole_box_.extend(geometry[v.index()]);
       continue;
     }
-    if (p.split)
+    if (p.split) {
+      p.config = configs[i].key();
       resolve_split(p, tet, configs[i], edge_numbers[i], classifier, table);
-    else
+    } else
       resolve_relabel(p, tet, classifier);
     pending_.push_back(p);
   }
@@ -467,7 +490,7 @@ void MtCut::change_tet(Mt& mt, TetBvh& bvh, Pending& p, MtChangeReport& report) 
   mt.kill_tet(old);
   bvh.replace(mt, old, pieces_);
   report.replaced.push_back({old, birth, death, static_cast<std::uint32_t>(report.made_tets.size()),
-                             static_cast<std::uint32_t>(pieces_.size())});
+                             static_cast<std::uint32_t>(pieces_.size()), p.config});
   report.made_tets.insert(report.made_tets.end(), pieces_.begin(), pieces_.end());
   p.done = true;
 }

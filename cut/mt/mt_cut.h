@@ -156,6 +156,7 @@ class MtCut {
     std::uint8_t count = 0;              // number of pieces (1 for a relabel)
     std::uint8_t on_faces = 0;           // relabel: faces lying in the cut (all vertices on it)
     bool split = false;                  // else relabel onto vertex copies
+    std::uint32_t config = 0;            // split tets: TetConfig::key
     bool done = false;
     const SplitRecipe* recipe = nullptr; // split tets: the pieces' faces
   };
@@ -225,6 +226,22 @@ class MtCut {
   std::vector<engine::FaceMask> piece_masks_;  // scratch of change_tet
   std::vector<std::int32_t> from_parents_;   // scratch of process
 };
+
+// Which splits of a part's front (`front`: provisional, cut under an
+// earlier polygon of the part, part_record.h) the part's grown `polygon`
+// leaves as they are: the tet is still crossed partially, in the
+// configuration it was split from (TetConfig::key, with the record's
+// points covering their edges as a cut of the part counts them), and none
+// of its vertices lies within `reach` of the plane (the state of such a
+// vertex is decided over all of a cut's tets, tet_classifier.h). The same
+// configuration gives the same split up to where the outline crosses the
+// tet's faces: a kept split's face points stay where the blade crossed
+// them then, less than a tet behind it, and the tets split afresh beside
+// it take them by key. `snap`: the cuts' (MtCutDef::snap). One flag per
+// replacement; relabels are not kept.
+std::vector<std::uint8_t> kept_front_splits(const Mt& mt, const MtChangeReport& front, const CutPolygon& polygon,
+                                            const PartRecord& record, double snap, double reach,
+                                            CutClassifier::Scratch* scratch = nullptr);
 
 // Order in which cut_mt processes the jobs (tests check they agree).
 enum class JobOrder : std::uint8_t { kAscending, kDescending, kShuffled };

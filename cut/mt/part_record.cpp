@@ -1,11 +1,12 @@
 #include "cut/mt/part_record.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 
 namespace mtcut::cut {
 
-void PartRecord::add(const Mt& mt, const MtChangeReport& commit) {
+void PartRecord::add(const Mt& mt, const MtChangeReport& commit, const MtChangeReport* held) {
   if (owned_.size() < mt.num_tets()) owned_.resize(mt.num_tets(), 0);
   for (TetId t : commit.made_tets) {
     num_owned_ += owned_[t.index()] == 0;
@@ -16,7 +17,57 @@ void PartRecord::add(const Mt& mt, const MtChangeReport& commit) {
     points_.emplace(made.key, made.id);
     made_[made.id.index()] = 1;
   }
-  owed_.add(mt, commit);
+  // A held point that a committed piece uses is committed with it: the
+  // held front may be taken back, the committed crack never.
+  promoted_.clear();
+  if (!held_points_.empty())
+    for (TetId t : commit.made_tets)
+      for (VertId v : mt.tet(t))
+        if (made_[v.index()] == 2) {
+          made_[v.index()] = 1;
+          promoted_.emplace_back(PointKey{}, v);
+        }
+  if (!promoted_.empty()) {
+    for (auto it = held_points_.begin(); it != held_points_.end();) {
+      if (made_[it->second.index()] != 1) {
+        ++it;
+        continue;
+      }
+      points_.emplace(it->first, it->second);
+      for (auto& [key, v] : promoted_)
+        if (v == it->second) key = it->first;
+      held_points_.erase(it++);
+    }
+  }
+  owed_.add(mt, commit, held);
+}
+
+void PartRecord::hold(const Mt& mt, const MtChangeReport& front) {
+  release();
+  if (owned_.size() < mt.num_tets()) owned_.resize(mt.num_tets(), 0);
+  if (made_.size() < mt.num_vertices()) made_.resize(mt.num_vertices(), 0);
+  for (TetId t : front.made_tets) {
+    if (owned_[t.index()] != 0) throw std::logic_error("PartRecord::hold: a held piece is committed");
+    owned_[t.index()] = 2;
+    held_tets_.push_back(t);
+    for (VertId v : mt.tet(t))
+      if (made_[v.index()] == 0) made_[v.index()] = 3;  // used, marked below when the front made it
+  }
+  for (const MadeVertex& made : front.made_vertices)
+    if (made_[made.id.index()] == 3) {
+      made_[made.id.index()] = 2;
+      held_points_.emplace(made.key, made.id);
+    }
+  for (TetId t : held_tets_)
+    for (VertId v : mt.tet(t))
+      if (made_[v.index()] == 3) made_[v.index()] = 0;
+}
+
+void PartRecord::release() {
+  for (TetId t : held_tets_) owned_[t.index()] = 0;
+  for (const auto& [key, v] : held_points_) made_[v.index()] = 0;
+  held_tets_.clear();
+  held_points_.clear();
 }
 
 void PartRecord::take_back(const MtChangeReport* commit, Before before) {
@@ -31,7 +82,13 @@ void PartRecord::take_back(const MtChangeReport* commit, Before before) {
         points_.erase(made.key);
         made_[made.id.index()] = 0;
       }
+    for (const auto& [key, v] : promoted_) {
+      points_.erase(key);
+      made_[v.index()] = 2;
+      held_points_.emplace(key, v);
+    }
   }
+  promoted_.clear();
   owed_ = std::move(before.owed);
   met_ = before.met;
   front_ = std::move(before.front);
@@ -50,6 +107,8 @@ std::vector<MadeVertex> PartRecord::committed_points() const {
 }
 
 void PartRecord::renumber(const Mt::Compaction& compaction) {
+  release();
+  promoted_.clear();
   std::vector<std::uint8_t> owned(owned_.size(), 0);
   for (std::size_t t = 0; t < owned_.size(); ++t)
     if (owned_[t] && compaction.tet_map[t] >= 0) owned[static_cast<std::size_t>(compaction.tet_map[t])] = 1;
@@ -75,24 +134,30 @@ engine::ValidationReport PartRecord::validate(const Mt& mt, const MtChangeReport
   engine::ValidationReport report;
   std::size_t owned = 0;
   std::vector<std::uint8_t> used(mt.num_vertices(), 0);
+  std::size_t held = 0;
   for (std::size_t t = 0; t < owned_.size(); ++t) {
     if (!owned_[t]) continue;
-    ++owned;
+    owned += owned_[t] == 1;
+    held += owned_[t] == 2;
     if (t >= mt.num_tets() || !mt.alive(TetId(t))) {
-      report.add("part record: committed piece " + std::to_string(t) + " is not a live tet");
+      report.add("part record: committed or held piece " + std::to_string(t) + " is not a live tet");
       continue;
     }
-    for (VertId v : mt.tet(TetId(t))) used[v.index()] = 1;
+    for (VertId v : mt.tet(TetId(t))) used[v.index()] |= owned_[t];
   }
   if (owned != num_owned_) report.add("part record: committed pieces miscounted");
+  if (held != held_tets_.size()) report.add("part record: held pieces miscounted");
+  for (const auto& [key, v] : held_points_)
+    if (!v.valid() || v.index() >= mt.num_vertices() || !(used[v.index()] & 2) || made_[v.index()] != 2)
+      report.add("part record: held point " + std::to_string(v.value) + " used by no held piece, or not marked");
   std::size_t made = 0;
   for (const auto& [key, v] : points_) {
-    if (!v.valid() || v.index() >= mt.num_vertices() || !used[v.index()])
+    if (!v.valid() || v.index() >= mt.num_vertices() || !(used[v.index()] & 1))
       report.add("part record: committed point " + std::to_string(v.value) + " used by no committed piece");
-    else if (!this->made(v))
+    else if (made_[v.index()] != 1)
       report.add("part record: committed point " + std::to_string(v.value) + " not marked made");
   }
-  for (std::uint8_t m : made_) made += m;
+  for (std::uint8_t m : made_) made += m == 1;
   if (made != points_.size()) report.add("part record: committed points miscounted");
   for (auto& p : owed_.validate(mt, since).problems) report.add("part record: " + p);
   return report;

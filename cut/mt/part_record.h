@@ -27,6 +27,14 @@
 // takes such a frame's cut back).
 // Fragments are decomposed only by committed cuts: a provisional split
 // (the front) never separates its tet, so it never separates a fragment.
+//
+// The held front. Most of a front is split the same way frame after frame
+// (the blade moves less than a tet per step at a stylus's rate): the
+// cutter keeps those splits (TimeCriticalCutter::recut) and holds them
+// here, so that the frame's cuts treat them as they treat the committed
+// ones: their pieces are not searched, and their points are taken by key.
+// They stay provisional: the part's end, or a frame that changes them,
+// takes them back.
 
 #include <cstdint>
 #include <optional>
@@ -59,15 +67,18 @@ class PartRecord {
 
   // The part's plane (its first polygon).
   const CutPolygon& plane() const { return plane_; }
+  // t is a committed piece or a held one: no cut of the part searches it.
   bool owns(TetId t) const { return t.index() < owned_.size() && owned_[t.index()] != 0; }
-  // v is a committed point (of the part's one planar crack).
+  // v is a committed or held point (of the part's one planar crack).
   bool made(VertId v) const { return v.index() < made_.size() && made_[v.index()] != 0; }
-  // The committed point of `key`, or none.
+  // The committed or held point of `key`, or none.
   VertId point(const PointKey& key) const {
-    const auto it = points_.find(key);
-    return it == points_.end() ? VertId() : it->second;
+    if (const auto it = points_.find(key); it != points_.end()) return it->second;
+    const auto it = held_points_.find(key);
+    return it == held_points_.end() ? VertId() : it->second;
   }
-  std::size_t num_owned() const { return num_owned_; }
+  std::size_t num_owned() const { return num_owned_; }  // committed pieces
+  std::size_t num_held() const { return held_tets_.size(); }
   // The committed points (key and id only), in id order: with the part's
   // end, what the stroke's crack records (stroke_crack.h).
   std::vector<MadeVertex> committed_points() const;
@@ -94,7 +105,14 @@ class PartRecord {
 
   // A committed cut finished (and was kept): its pieces and points join,
   // and what it owes the fragments.
-  void add(const Mt& mt, const MtChangeReport& commit);
+  // `held`: the front kept beside it (FragmentLedger::add).
+  void add(const Mt& mt, const MtChangeReport& commit, const MtChangeReport* held = nullptr);
+  // The front kept from the last frame (`front`: its replacements, and the
+  // points its cuts made): its pieces and the points they use are held,
+  // in place of what was held before. release(): none is.
+  void hold(const Mt& mt, const MtChangeReport& front);
+  void release();
+
   // A frame taken back (its commit or front refused, the commit retracted
   // if it was kept): the commit's pieces and points leave, and the ledger,
   // whether the part had met an older crack and the front are again as
@@ -106,10 +124,12 @@ class PartRecord {
   };
   Before before_commit() const { return {owed_, met_, front_}; }
   void take_back(const MtChangeReport* commit, Before before);
-  // The MT was compacted (Mt::compact): ids follow.
+  // The MT was compacted (Mt::compact): ids follow; the held front is
+  // released (its holder holds it again, renumbered).
   void renumber(const Mt::Compaction& compaction);
 
-  // Every owned tet is alive, every point a vertex some owned tet uses;
+  // Every owned tet is alive, every point a vertex some owned tet uses
+  // (held ones: some held tet);
   // the ledger holds what the fragments it names are out of balance by,
   // with `since` (the changes made after the last commit: the part's held
   // front, or its cut in progress; may be null).
@@ -117,13 +137,18 @@ class PartRecord {
 
  private:
   CutPolygon plane_;
-  std::vector<std::uint8_t> owned_;  // (tets) 1: a committed piece
+  std::vector<std::uint8_t> owned_;  // (tets) 1: a committed piece, 2: a held one
   std::size_t num_owned_ = 0;
-  std::vector<std::uint8_t> made_;   // (vertices) 1: a committed point
+  std::vector<std::uint8_t> made_;   // (vertices) 1: a committed point, 2: a held one
   std::optional<engine::Aabb> front_;
   FragmentLedger owed_;
   bool met_ = false;
   absl::flat_hash_map<PointKey, VertId, PointKeyHash> points_;
+  std::vector<TetId> held_tets_;
+  absl::flat_hash_map<PointKey, VertId, PointKeyHash> held_points_;
+  // Held points the last commit's pieces use, committed by it (take_back
+  // holds them again).
+  std::vector<std::pair<PointKey, VertId>> promoted_;
 };
 
 }  // namespace mtcut::cut

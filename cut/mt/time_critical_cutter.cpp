@@ -82,7 +82,7 @@ void TimeCriticalCutter::submit_provisional(const CutPolygon& polygon) {
 }
 
 void TimeCriticalCutter::queue_provisional(Queued q) {
-  if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
+  if (provisional_pending()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
   q.provisional = true;
   queue_.push_back(std::move(q));
   provisional_queued_ = true;
@@ -101,9 +101,70 @@ std::optional<CutRetraction> TimeCriticalCutter::retract(Mt& mt, TetBvh& bvh) {
     tx = std::move(held_);
     held_.reset();
   }
-  if (!tx) return std::nullopt;
-  CutRetraction out = retract_cut(mt, bvh, tx->changes, tx->fragments_before, tx->bvh_mark ? &*tx->bvh_mark : nullptr);
-  pieces_stale_ = pieces_stale_ || out.fragments_removed > 0;
+  std::optional<CutRetraction> out;
+  if (tx) out = take_back(mt, bvh, *tx);
+  if (kept_) {  // the part's front kept this frame, its own front not finished
+    std::vector<std::uint8_t> all(kept_->changes.replaced.size(), 1);
+    CutRetraction more = retract_replacements(mt, bvh, kept_->changes, all);
+    kept_->record->release();
+    keep_committed(more, kept_->record.get());
+    kept_.reset();
+    if (!out) out.emplace();
+    out->revived.insert(out->revived.end(), more.revived.begin(), more.revived.end());
+    out->killed.insert(out->killed.end(), more.killed.begin(), more.killed.end());
+    out->unused.insert(out->unused.end(), more.unused.begin(), more.unused.end());
+  }
+  if (out) pieces_stale_ = pieces_stale_ || out->fragments_removed > 0;
+  return out;
+}
+
+CutRetraction TimeCriticalCutter::take_back(Mt& mt, TetBvh& bvh, Transaction& tx) {
+  CutRetraction out;
+  if (tx.combined) {
+    std::vector<std::uint8_t> all(tx.changes.replaced.size(), 1);
+    out = retract_replacements(mt, bvh, tx.changes, all);
+  } else {
+    out = retract_cut(mt, bvh, tx.changes, tx.fragments_before, tx.bvh_mark ? &*tx.bvh_mark : nullptr);
+  }
+  if (tx.front_of) {
+    tx.front_of->release();
+    keep_committed(out, tx.front_of.get());
+  }
+  return out;
+}
+
+void TimeCriticalCutter::follow_fragments(const Mt& mt, MtChangeReport& held) {
+  for (TetReplacement& r : held.replaced) {
+    const TetId piece = held.made_tets[r.first];
+    r.birth = mt.birth(piece);
+    r.death = mt.death(piece);
+  }
+}
+
+void TimeCriticalCutter::keep_committed(CutRetraction& retraction, const PartRecord* record) {
+  if (!record) return;
+  std::erase_if(retraction.unused, [&](const MadeVertex& m) { return record->made(m.id); });
+}
+
+std::optional<CutRetraction> TimeCriticalCutter::keep_front(Mt& mt, TetBvh& bvh, const CutPolygon& polygon) {
+  Transaction tx = std::move(*held_);
+  held_.reset();
+  PartRecord& record = *part_->record;
+  record.release();
+  // Vertices this near the plane may be put on the cut by the cut's other
+  // tets (the classifier's snap reach is a fraction of an edge, and no
+  // edge is longer than the model's box): their tets are split afresh.
+  const engine::Aabb box = bvh.bounds();
+  const double reach = 10 * std::max(def_.cut.snap, ClassifierDef::kMinSnap) * (box.hi - box.lo).norm();
+  std::vector<std::uint8_t> take =
+      kept_front_splits(mt, tx.changes, polygon, record, def_.cut.snap, reach, &workspace_.classifier);
+  for (std::uint8_t& t : take) t = !t;
+  CutRetraction out = retract_replacements(mt, bvh, tx.changes, take);
+  keep_committed(out, &record);
+  if (!tx.changes.replaced.empty()) {
+    record.hold(mt, tx.changes);
+    kept_ = Kept{part_->record, std::move(tx.changes)};
+  }
   return out;
 }
 
@@ -118,7 +179,17 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
   if (turned_back.size() != ended.size())
     throw std::invalid_argument("TimeCriticalCutter::recut: " + std::to_string(turned_back.size()) +
                                 " turn flags for " + std::to_string(ended.size()) + " ended parts");
-  std::optional<CutRetraction> out = retract(mt, bvh);
+  // The part in progress grows: its front's splits that stay as they are
+  // are kept (keep_front), unless the part has met an older crack (its
+  // front is checked whole against the commits' ledger) or another cut is
+  // queued or in progress (it would search the kept pieces).
+  std::optional<CutRetraction> out;
+  if (ended.empty() && current && part_ && held_ && held_->front_of == part_->record && !active_ &&
+      queue_.empty() && !part_->record->met_old_crack()) {
+    if (const std::optional<CutPolygon> on = on_part_plane(*part_, crossing_ ? past(*current, *crossing_) : *current))
+      out = keep_front(mt, bvh, *on);
+  }
+  if (!out) out = retract(mt, bvh);
   for (std::size_t i = 0; i < ended.size(); ++i) {
     // The polygon cut for good: the part's (the first ended one, if a part
     // is in progress), or the ended one going on from the last.
@@ -295,14 +366,14 @@ std::optional<CutPolygon> TimeCriticalCutter::on_part_plane(const Part& part, co
 
 void TimeCriticalCutter::submit_ended(const CutPolygon& polygon, std::shared_ptr<PartRecord> record,
                                       const std::optional<Pivot>& next, std::optional<CutPolygon> fallback) {
-  if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
+  if (provisional_pending()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
   Queued q{.polygon = polygon, .record = std::move(record), .stroke = true, .fallback = std::move(fallback)};
   if (next) q.leading = std::array<Vec3, 2>{next->a, next->b};
   queue_.push_back(std::move(q));
 }
 
 void TimeCriticalCutter::submit_part(const Part& part, std::optional<CutPolygon> grown_from) {
-  if (provisional_held()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
+  if (provisional_pending()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
   // This frame grows from where a frame of the part left queued would have.
   drop_queued_frame(*part.record, grown_from);
   queue_.push_back({.polygon = part.last,
@@ -382,7 +453,12 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def, table_, &workspace_);
   if (a.record && a.select == CutSelect::kComplete) {
     frame_ = Frame{.record = a.record.get(), .previous = q.grown_from, .before = a.record->before_commit()};
-    a.record->set_front(a.cut->left_whole_box());
+    // The front: the tets the commit leaves whole, and the kept splits'.
+    engine::Aabb front = a.cut->left_whole_box();
+    if (kept_ && kept_->record == a.record)
+      for (const TetReplacement& r : kept_->changes.replaced)
+        for (VertId v : mt.tet(r.old)) front.extend(mt.position(v));
+    a.record->set_front(front);
   }
   const auto jobs = a.cut->jobs();
   for (std::size_t j = 0; j < jobs.size(); ++j)
@@ -459,8 +535,19 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
         std::any_of(a.tx.changes.replaced.begin(), a.tx.changes.replaced.end(),
                     [&](const TetReplacement& r) { return mt.error_inherited(r.old); }))
       a.record->meet_old_crack();
-    const engine::ValidationReport guard = check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex,
-                                                     a.record.get(), a.select, with_commit ? &commit : nullptr);
+    // A front with splits kept from earlier frames: they are of the part's
+    // crack, checked when they were made, but where the fragments' balance
+    // is checked (cut_guard.h) the whole front pays what the commits owe.
+    const bool with_kept = a.select == CutSelect::kFront && kept_ && kept_->record == a.record;
+    const bool whole = with_kept && ledger_checked(a.record.get());
+    MtChangeReport whole_front;
+    if (whole) {
+      whole_front = kept_->changes;
+      whole_front.append(a.tx.changes);
+    }
+    const engine::ValidationReport guard =
+        check_cut(mt, bvh, whole ? whole_front : a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex,
+                  a.record.get(), a.select, with_commit ? &commit : nullptr);
     if (!guard.ok()) {
       result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &*a.tx.bvh_mark);
       result.refused_reported_vertices = a.tx.changes.made_vertices.size() - call.made_vertices.size();
@@ -495,7 +582,9 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     pieces_stale_ = pieces_stale_ || (a.split_every_level && a.select != CutSelect::kFront);
     if (a.record && a.select == CutSelect::kFront) frame_.reset();  // the frame is kept
     if (a.record && a.select == CutSelect::kComplete) {
-      a.record->add(mt, a.tx.changes);
+      const bool beside_kept = kept_ && kept_->record == a.record;
+      if (beside_kept && !a.tx.changes.fragment_splits.empty()) follow_fragments(mt, kept_->changes);
+      a.record->add(mt, a.tx.changes, beside_kept ? &kept_->changes : nullptr);
       searched_ = Searched{a.record.get(), mt.instance(), mt.revision(), a.cut->candidates()};
       if (frame_ && frame_->record == a.record.get()) {
         a.tx.bvh_mark.reset();  // the index's one mark is the next cut's
@@ -515,9 +604,24 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     // part's end, not every frame (a pass over the MT each).
     const bool front_open =
         (a.record && (a.select == CutSelect::kFront ||
-                      (a.select == CutSelect::kComplete && a.cut->tets_left_whole() > 0))) ||
+                      (a.select == CutSelect::kComplete &&
+                       (a.cut->tets_left_whole() > 0 || (kept_ && kept_->record == a.record))))) ||
         (a.provisional && a.cut->tets_crossed_partially() > 0);
-    if (a.provisional) held_ = std::move(a.tx);
+    if (a.provisional) {
+      held_ = std::move(a.tx);
+      if (a.record && a.select == CutSelect::kFront) {
+        held_->front_of = a.record;
+        if (with_kept) {  // the whole front, held in the record until the next frame
+          MtChangeReport front = std::move(kept_->changes);
+          front.append(held_->changes);
+          held_->changes = std::move(front);
+          held_->combined = true;
+          held_->bvh_mark.reset();
+          kept_.reset();
+        }
+        a.record->hold(mt, held_->changes);
+      }
+    }
     active_.reset();  // `a` is gone from here
     if (def_.report_pieces && pieces_stale_ && !front_open) {
       result.pieces = count_pieces(mt);
@@ -546,6 +650,7 @@ void TimeCriticalCutter::take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_
   if (frame.commit) {
     const Transaction& c = *frame.commit;
     CutRetraction retraction = retract_cut(mt, bvh, c.changes, c.fragments_before);
+    if (kept_ && kept_->record == record && retraction.fragments_removed > 0) follow_fragments(mt, kept_->changes);
     if (frame.call == calls_ && frame.reported_from) {
       // This call reported the commit: it is dropped from the report, and
       // the caller, which maps the report before the refusal, never sees it.
@@ -580,6 +685,7 @@ void TimeCriticalCutter::reserve(Mt& mt) {
 bool TimeCriticalCutter::reclaimable(const Mt& mt) const {
   std::size_t held = held_ ? held_->changes.replaced.size() : 0;  // dead, kept to revive
   if (frame_ && frame_->commit) held += frame_->commit->changes.replaced.size();
+  if (kept_) held += kept_->changes.replaced.size();
   const std::size_t droppable = mt.num_dead_tets() - std::min(held, mt.num_dead_tets());
   return !frozen() && droppable >= kReclaimMin && droppable > mt.num_live_tets();
 }
@@ -591,6 +697,8 @@ std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh
     for (const TetReplacement& r : held_->changes.replaced) keep.push_back(r.old);
   if (frame_ && frame_->commit)
     for (const TetReplacement& r : frame_->commit->changes.replaced) keep.push_back(r.old);
+  if (kept_)
+    for (const TetReplacement& r : kept_->changes.replaced) keep.push_back(r.old);
   engine::Mt::Compaction out = mt.compact(std::min(first_cut_vertex_, mt.num_vertices()), keep);
   bvh.renumber(out);
   if (part_) part_->record->renumber(out);
@@ -610,6 +718,13 @@ std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh
     renumber(*held_);
     if (!bvh.marked()) held_->bvh_mark.reset();  // the index's mark survives when it kept what the held cut removed
   }
+  if (kept_) kept_->changes.renumber(out);
+  if (part_) {  // its record released what it held: the same front, renumbered
+    if (kept_ && kept_->record == part_->record)
+      part_->record->hold(mt, kept_->changes);
+    else if (held_ && held_->front_of == part_->record)
+      part_->record->hold(mt, held_->changes);
+  }
   return out;
 }
 
@@ -627,19 +742,34 @@ CutterProgress TimeCriticalCutter::progress() const {
 engine::ValidationReport TimeCriticalCutter::validate(const Mt& mt) const {
   engine::ValidationReport report;
   if (held_)
-    for (auto& p : validate_retractable(mt, held_->changes, held_->fragments_before).problems)
+    for (auto& p : (held_->combined ? validate_replacements(mt, held_->changes)
+                                    : validate_retractable(mt, held_->changes, held_->fragments_before))
+                       .problems)
       report.add("cutter: provisional cut: " + p);
+  if (kept_)
+    for (auto& p : validate_replacements(mt, kept_->changes).problems) report.add("cutter: the kept front: " + p);
   if (active_)
     for (auto& p : validate_retractable(mt, active_->tx.changes, active_->tx.fragments_before).problems)
       report.add("cutter: cut in progress: " + p);
   if (provisional_queued_ && (queue_.empty() || !queue_.back().provisional))
     report.add("cutter: a provisional cut is counted as queued but the queue's last entry is not one");
   if (part_) {
-    // What the part changed since its last commit: its cut in progress, or its held front.
-    const MtChangeReport* since = active_ && active_->record == part_->record ? &active_->tx.changes
-                                  : held_                                    ? &held_->changes
-                                                                             : nullptr;
-    for (auto& p : part_->record->validate(mt, since).problems) report.add("cutter: " + p);
+    // What the part changed since its last commit: its kept front, and its
+    // cut in progress or its held front.
+    MtChangeReport since;
+    bool changed = false;
+    if (kept_ && kept_->record == part_->record) {
+      since = kept_->changes;
+      changed = true;
+    }
+    if (active_ && active_->record == part_->record) {
+      since.append(active_->tx.changes);
+      changed = true;
+    } else if (held_) {
+      since.append(held_->changes);
+      changed = true;
+    }
+    for (auto& p : part_->record->validate(mt, changed ? &since : nullptr).problems) report.add("cutter: " + p);
   }
   if (frame_ && frame_->commit)
     for (auto& p : validate_retractable(mt, frame_->commit->changes, frame_->commit->fragments_before).problems)

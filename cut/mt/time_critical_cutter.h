@@ -105,8 +105,9 @@ class TimeCriticalCutter {
   // Queues a provisional cut (in rest space), to be taken back by retract().
   // Throws std::logic_error while one is held.
   void submit_provisional(const CutPolygon& polygon);
-  // A provisional cut is queued, in progress or done and not retracted.
-  bool provisional_held() const { return provisional_queued_ || held_ || (active_ && active_->provisional); }
+  // A provisional cut is queued, in progress or done and not retracted
+  // (a part's front kept from earlier frames among them).
+  bool provisional_held() const { return provisional_pending() || kept_; }
   // Takes the provisional cut back: a queued one is dropped, a started one
   // (its pending jobs dropped) is undone in `mt` and `bvh`. nullopt when none
   // had started. The caller maps its frontier (follow_retraction).
@@ -117,7 +118,12 @@ class TimeCriticalCutter {
   // (part_record.h) from the first frame its plane is fixed (`plane_fixed`:
   // StrokeSweep::plane_fixed()): each frame its tets crossed completely are
   // committed, the rest (the front) split provisionally, and the part's end
-  // takes every tet left. Until then the whole polygon is cut
+  // takes every tet left. The front's splits that the grown polygon leaves
+  // in the configuration they were made from stay (kept_front_splits: most
+  // of them, the blade moving less than a tet a frame), held in the record;
+  // only the others are taken back, and split afresh by the frame's commit
+  // or front. A part that has met an older crack takes its whole front
+  // back each frame (its front pays its commits' ledger whole). Until then the whole polygon is cut
   // provisionally. A polygon of the part that is not on the record's plane
   // (the World carries each frame's polygon to rest space anew) is
   // projected onto it, joined with the part's last polygon.
@@ -298,6 +304,11 @@ class TimeCriticalCutter {
     std::size_t first_new_vertex = 0;
     MtChangeReport changes;
     std::optional<engine::TetBvh::Mark> bvh_mark;
+    // A part's front (its record) ...
+    std::shared_ptr<PartRecord> front_of{};
+    // ... holding splits kept from earlier frames: taken back tet by tet
+    // (retract_replacements), with no mark and no fragment count.
+    bool combined = false;
   };
   struct Active {
     std::unique_ptr<MtCut> cut;
@@ -323,6 +334,27 @@ class TimeCriticalCutter {
   std::deque<Queued> queue_;
   std::optional<Active> active_;
   std::optional<Transaction> held_;  // the provisional cut, finished and kept until retract()
+  // The splits of the part's front kept this frame (recut), held in its
+  // record, until the frame's front joins them in held_.
+  struct Kept {
+    std::shared_ptr<PartRecord> record;
+    MtChangeReport changes;
+  };
+  std::optional<Kept> kept_;
+  // A provisional cut is queued, in progress or held (not counting kept_).
+  bool provisional_pending() const { return provisional_queued_ || held_ || (active_ && active_->provisional); }
+  // The part's front under its grown `polygon` (recut): the splits it
+  // changes taken back, the others kept (kept_). nullopt when nothing was
+  // held.
+  std::optional<CutRetraction> keep_front(Mt& mt, TetBvh& bvh, const CutPolygon& polygon);
+  // Takes `tx` back (a part's front of `record`, or any provisional cut).
+  CutRetraction take_back(Mt& mt, TetBvh& bvh, Transaction& tx);
+  // A commit decomposed the fragments of `held`'s pieces, or was taken
+  // back: its replacements name the fragments the pieces are in now.
+  static void follow_fragments(const Mt& mt, MtChangeReport& held);
+  // Drops from `retraction.unused` the points `record` committed since
+  // they were made (a commit's pieces use them).
+  static void keep_committed(CutRetraction& retraction, const PartRecord* record);
   std::size_t first_cut_vertex_ = SIZE_MAX;  // the MT's vertex count when the first cut started
   bool provisional_queued_ = false;  // the queue's last entry is provisional
   std::optional<Part> part_;         // the part in progress, once its plane is fixed

@@ -62,6 +62,7 @@ void TetBvh::rebuild(const Mt& mt) {
   const auto items = bvh_.items();
   slot_tet_.resize(items.size());
   where_.assign(mt.num_tets(), -1);
+  vacated_.assign(mt.num_tets(), -1);
   for (std::size_t s = 0; s < items.size(); ++s) {
     slot_tet_[s] = ids[static_cast<std::size_t>(items[s])];
     where_[static_cast<std::size_t>(slot_tet_[s])] = static_cast<std::int32_t>(s);
@@ -79,7 +80,7 @@ void TetBvh::rebuild(const Mt& mt) {
   indexed_ = ids.size();
   edits_ = 0;
   marking_ = false;
-  removed_since_mark_.clear();
+  undo_.clear();
 }
 
 void TetBvh::renumber(const Mt::Compaction& compaction) {
@@ -90,26 +91,31 @@ void TetBvh::renumber(const Mt::Compaction& compaction) {
   for (std::int32_t& t : extra_tet_) map(t);
   std::size_t tets = 0;
   for (const std::int32_t t : compaction.tet_map) tets += t >= 0;
-  std::vector<std::int32_t> where(tets, -1);
-  for (std::size_t t = 0; t < where_.size() && t < compaction.tet_map.size(); ++t)
-    if (where_[t] != -1) where[static_cast<std::size_t>(compaction.tet_map[t])] = where_[t];
+  std::vector<std::int32_t> where(tets, -1), vacated(tets, -1);
+  for (std::size_t t = 0; t < where_.size() && t < compaction.tet_map.size(); ++t) {
+    const std::int32_t to = compaction.tet_map[t];
+    if (to < 0) continue;
+    where[static_cast<std::size_t>(to)] = where_[t];
+    vacated[static_cast<std::size_t>(to)] = vacated_[t];
+  }
   where_ = std::move(where);
-  // The mark holds while every tet removed since it was kept (a held cut's
+  vacated_ = std::move(vacated);
+  // The mark holds while every tet edited since it was kept (a held cut's
   // replaced tets, dead, which its retraction brings back).
-  for (auto& [t, w] : removed_since_mark_) {
+  for (Undo& u : undo_) {
     if (!marking_) break;
-    t = compaction.tet_map[static_cast<std::size_t>(t)];
-    if (t < 0) {
+    u.tet = compaction.tet_map[static_cast<std::size_t>(u.tet)];
+    if (u.tet < 0) {
       marking_ = false;
       ++mark_generation_;
-      removed_since_mark_.clear();
+      undo_.clear();
     }
   }
 }
 
 TetBvh::Mark TetBvh::mark() {
   marking_ = true;
-  removed_since_mark_.clear();
+  undo_.clear();
   return {extra_tet_.size(), indexed_, edits_, ++mark_generation_};
 }
 
@@ -127,27 +133,45 @@ void TetBvh::roll_back(const Mark& m) {
   extra_tet_.resize(m.extra);
   extra_next_.resize(m.extra);
   extra_leaf_.resize(m.extra);
-  // Tets removed since the mark go back where they were.
-  for (auto it = removed_since_mark_.rbegin(); it != removed_since_mark_.rend(); ++it) {
-    const auto [t, w] = *it;
-    if (w >= 0) {
-      slot_tet_[static_cast<std::size_t>(w)] = t;
-    } else if (static_cast<std::size_t>(-w - 2) < m.extra) {
-      extra_tet_[static_cast<std::size_t>(-w - 2)] = t;
-    } else {
-      continue;  // inserted after the mark: gone with it
+  // The other edits since the mark, undone in reverse: tets removed go
+  // back where they were, tets put back in their slots leave them again,
+  // entries of removed tets that others took are removed ones again.
+  for (auto it = undo_.rbegin(); it != undo_.rend(); ++it) {
+    const auto t = static_cast<std::size_t>(it->tet);
+    const std::int32_t w = it->where;
+    switch (it->kind) {
+      case Undo::Kind::kRemoved:
+        if (w >= 0) {
+          slot_tet_[static_cast<std::size_t>(w)] = it->tet;
+          vacated_[t] = -1;
+        } else if (static_cast<std::size_t>(-w - 2) < m.extra) {
+          extra_tet_[static_cast<std::size_t>(-w - 2)] = it->tet;
+        } else {
+          continue;  // inserted after the mark: gone with it
+        }
+        where_[t] = w;
+        break;
+      case Undo::Kind::kRestored:
+        slot_tet_[static_cast<std::size_t>(w)] = -1;
+        vacated_[t] = w;
+        where_[t] = -1;
+        break;
+      case Undo::Kind::kReused:
+        if (static_cast<std::size_t>(w) >= m.extra) continue;  // gone with the entries made since
+        extra_tet_[static_cast<std::size_t>(w)] = -1;
+        where_[t] = -1;
+        break;
     }
-    where_[static_cast<std::size_t>(t)] = w;
   }
   indexed_ = m.indexed;
   edits_ = m.edits;
   marking_ = false;
-  removed_since_mark_.clear();
+  undo_.clear();
 }
 
 std::size_t TetBvh::bytes() const {
   return bvh_.bytes() + (slot_tet_.capacity() + extra_head_.capacity() + extra_tet_.capacity() +
-                         extra_next_.capacity() + where_.capacity() + slot_leaf_.capacity() + extra_leaf_.capacity()) *
+                         extra_next_.capacity() + where_.capacity() + vacated_.capacity() + slot_leaf_.capacity() + extra_leaf_.capacity()) *
                             sizeof(std::int32_t);
 }
 
@@ -177,15 +201,17 @@ TetId TetBvh::locate_in(const Mt& mt, const Frontier& frontier, const Vec3& p) c
 void TetBvh::remove(TetId t) {
   if (t.index() >= where_.size() || where_[t.index()] == -1) return;
   const std::int32_t w = where_[t.index()];
-  if (marking_) removed_since_mark_.emplace_back(t.value, w);
+  if (marking_) undo_.push_back({Undo::Kind::kRemoved, t.value, w});
   if (w >= 0) {
     slot_tet_[static_cast<std::size_t>(w)] = -1;
+    vacated_[t.index()] = w;
+    ++edits_;
   } else {
-    extra_tet_[static_cast<std::size_t>(-w - 2)] = -1;
+    extra_tet_[static_cast<std::size_t>(-w - 2)] = -1;  // a query skips it (no box test): free for the leaf's next tet
+    if (edits_ > 0) --edits_;
   }
   where_[t.index()] = -1;
   --indexed_;
-  ++edits_;
 }
 
 void TetBvh::insert(const Mt& mt, TetId t) {
@@ -194,8 +220,18 @@ void TetBvh::insert(const Mt& mt, TetId t) {
     rebuild(mt);
     return;
   }
-  if (where_.size() < mt.num_tets()) where_.resize(mt.num_tets(), -1);
+  grow(mt.num_tets());
   if (where_[t.index()] != -1) return;
+  // A tet that left its slot takes it again (its leaf's box holds it).
+  if (const std::int32_t w = vacated_[t.index()]; w >= 0 && slot_tet_[static_cast<std::size_t>(w)] == -1) {
+    if (marking_) undo_.push_back({Undo::Kind::kRestored, t.value, w});
+    slot_tet_[static_cast<std::size_t>(w)] = t.value;
+    where_[t.index()] = w;
+    vacated_[t.index()] = -1;
+    ++indexed_;
+    if (edits_ > 0) --edits_;
+    return;
+  }
   const Aabb box = indexed_box(mt, t);
   // Down one path, growing each box on it, towards the child that grows least.
   auto nodes = bvh_.mutable_nodes();
@@ -220,11 +256,26 @@ std::int32_t TetBvh::leaf_of(TetId t) const {
   return w >= 0 ? slot_leaf_[static_cast<std::size_t>(w)] : extra_leaf_[static_cast<std::size_t>(-w - 2)];
 }
 
+void TetBvh::grow(std::size_t tets) {
+  if (where_.size() < tets) where_.resize(tets, -1);
+  if (vacated_.size() < tets) vacated_.resize(tets, -1);
+}
+
 void TetBvh::append_to_leaf(std::size_t n, std::span<const TetId> tets) {
   const std::size_t first = extra_tet_.size();
   std::int32_t head = extra_head_[n];
+  std::int32_t free = head;  // the next entry of the list to look at for a removed one
   for (TetId t : tets) {
     if (where_[t.index()] != -1) continue;  // already indexed
+    while (free >= 0 && extra_tet_[static_cast<std::size_t>(free)] >= 0) free = extra_next_[static_cast<std::size_t>(free)];
+    if (free >= 0) {  // an entry a removed tet left: its removal is undone
+      if (marking_) undo_.push_back({Undo::Kind::kReused, t.value, free});
+      extra_tet_[static_cast<std::size_t>(free)] = t.value;
+      where_[t.index()] = -free - 2;
+      ++indexed_;
+      ++edits_;
+      continue;
+    }
     const auto e = static_cast<std::int32_t>(extra_tet_.size());
     extra_tet_.push_back(t.value);
     extra_next_.push_back(head);
@@ -240,6 +291,7 @@ void TetBvh::append_to_leaf(std::size_t n, std::span<const TetId> tets) {
 
 void TetBvh::reserve(std::size_t tets, std::size_t insertions) {
   reserve_geometric(where_, tets);
+  reserve_geometric(vacated_, tets);
   reserve_geometric(extra_tet_, extra_tet_.size() + insertions);
   reserve_geometric(extra_next_, extra_next_.size() + insertions);
   reserve_geometric(extra_leaf_, extra_leaf_.size() + insertions);
@@ -255,7 +307,7 @@ void TetBvh::replace(const Mt& mt, TetId old, std::span<const TetId> pieces) {
     for (TetId t : pieces) insert(mt, t);
     return;
   }
-  if (where_.size() < mt.num_tets()) where_.resize(mt.num_tets(), -1);
+  grow(mt.num_tets());
   append_to_leaf(static_cast<std::size_t>(leaf), pieces);  // in one go: each array grown once
 }
 
@@ -313,6 +365,11 @@ ValidationReport TetBvh::validate(const Mt& mt) const {
       report.add(tet_name(static_cast<std::int32_t>(t)) + " is live but not indexed");
   if (listed != indexed_)
     report.add("TetBvh: " + std::to_string(listed) + " tets listed, " + std::to_string(indexed_) + " counted");
+  // A slot a tet left is empty until that tet takes it again.
+  for (std::size_t t = 0; t < vacated_.size(); ++t)
+    if (vacated_[t] >= 0 && (static_cast<std::size_t>(vacated_[t]) >= slot_tet_.size() ||
+                             slot_tet_[static_cast<std::size_t>(vacated_[t])] != -1 || where_[t] >= 0))
+      report.add(tet_name(static_cast<std::int32_t>(t)) + " left a slot that is not empty, or holds another");
   return report;
 }
 

@@ -10,7 +10,11 @@
 // in one tet per resolution that differs there, a few dozen at most). The
 // cutter's replacements are applied in place (remove + insert, which only
 // grows boxes on one root-to-leaf path) and the tree is rebuilt, by its
-// owner between cuts, once the edits outnumber half the tets.
+// owner between cuts, once the edits outnumber half the tets. Edits that
+// undo edits wear nothing: a tet that left its slot takes it again when it
+// is inserted back, and a tet joining a leaf takes an entry a removed tet
+// left in that leaf's list (a stroke's front, split and taken back frame
+// after frame in the same tets, cut_retraction.h).
 
 #include <algorithm>
 #include <cstdint>
@@ -133,9 +137,13 @@ class TetBvh {
   // forgotten: marked() says which).
   void renumber(const Mt::Compaction& compaction);
 
-  // The edits since the last rebuild outnumber half the indexed tets:
-  // queries have slowed down enough that a rebuild pays for itself.
+  // The edits since the last rebuild (slots left empty and tets in the
+  // leaves' lists: what a query tests beyond a fresh tree's tets; an entry
+  // a removed tet left is skipped, and the leaf's next tet takes it)
+  // outnumber half the indexed tets: queries have slowed down enough that
+  // a rebuild pays for itself.
   bool worn() const { return edits_ > indexed_ / 2 + 64; }
+  std::size_t edits() const { return edits_; }
   // Rebuilds when worn(); returns whether it did.
   bool refresh(const Mt& mt);
 
@@ -151,6 +159,7 @@ class TetBvh {
   // Appends the tets not indexed yet to leaf n's list, in one go (n's box
   // and its ancestors' must hold their boxes; where_ covers their ids).
   void append_to_leaf(std::size_t n, std::span<const TetId> tets);
+  void grow(std::size_t tets);  // where_ and vacated_ over ids below `tets`
 
   template <class Visit>
   bool visit_leaf(std::int32_t n, Visit&& visit) const {
@@ -175,11 +184,18 @@ class TetBvh {
   std::vector<std::int32_t> extra_leaf_;  // (n_extra) leaf node of each inserted tet
   std::vector<std::int32_t> where_;       // (n_tets) slot >= 0, extra e as -(e + 2), -1 = not indexed
   std::size_t indexed_ = 0;
-  std::size_t edits_ = 0;  // removals and insertions since the last rebuild
-  // While marked: (tet, where_ entry) of every tet removed since the mark.
+  std::vector<std::int32_t> vacated_;    // (n_tets) the slot a removed tet left, -1 = none
+  std::size_t edits_ = 0;  // empty slots and listed tets since the last rebuild
+  // While marked: every edit since the mark, undone in reverse by roll_back.
+  struct Undo {
+    enum class Kind : std::uint8_t { kRemoved, kRestored, kReused };
+    Kind kind;
+    std::int32_t tet;
+    std::int32_t where;  // kRemoved: where_ entry it had; kRestored: the slot; kReused: the extra entry
+  };
   bool marking_ = false;
   std::uint64_t mark_generation_ = 0;
-  std::vector<std::pair<std::int32_t, std::int32_t>> removed_since_mark_;
+  std::vector<Undo> undo_;
 };
 
 }  // namespace mtcut::engine

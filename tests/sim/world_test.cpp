@@ -337,6 +337,13 @@ TEST(World, TheIncisionOpensBehindTheBladeEveryFrame) {
     for (engine::VertId v : world.frontier().vertices()) n += v.index() >= original;
     return n;
   };
+  const auto cut_vertices_used = [&] {  // at any resolution
+    std::vector<char> used(world.mt().num_vertices(), 0);
+    for (std::size_t t = 0; t < world.mt().num_tets(); ++t)
+      if (world.mt().alive(engine::TetId(t)))
+        for (engine::VertId v : world.mt().tet(engine::TetId(t))) used[v.index()] = v.index() >= original;
+    return static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
+  };
   std::size_t grew = 0, inside = 0, last = 0, most_dead = 0;
   int separated_at = -1;
   for (int f = 1; f <= 70; ++f) {
@@ -344,6 +351,7 @@ TEST(World, TheIncisionOpensBehindTheBladeEveryFrame) {
     const auto report = world.validate();
     ASSERT_TRUE(report.ok()) << "frame " << f << ": " << report.summary();
     most_dead = std::max(most_dead, world.mt().num_dead_tets());
+    EXPECT_EQ(m.cut_vertices, cut_vertices_used()) << "frame " << f;
     const std::size_t shown = cut_vertices_shown();
     if (f == 10) {
       EXPECT_GT(shown, 0u) << "no incision on the frontier at frame 10";

@@ -55,6 +55,57 @@ TEST(CutRetraction, RetractingACutRestoresTheMtUpToNumbering) {
   }
 }
 
+// A provisional cut (no fragment decomposed) taken back split by split,
+// some now and the rest later: the splits left stay, with the vertices
+// their pieces use, the others' vertices are reported unused, and once
+// every split is taken back the MT is as before, up to numbering. A cut
+// that decomposed fragments is refused.
+TEST(CutRetraction, SplitsTakenBackOneByOneRestoreTheMt) {
+  std::mt19937_64 rng(11);
+  for (const std::string name : {"ellipsoid", "liver"}) {
+    const Mt& original = cut_test_mt(name);
+    const auto canonical = canonical_mt(original);
+    const engine::Aabb box = mt_box(original);
+    for (int i = 0; i < 4; ++i) {
+      const std::string where = name + " cut " + std::to_string(i);
+      Mt mt = original;
+      engine::TetBvh bvh(mt);
+      cut::CutMtOptions options;
+      options.def.decompose = false;
+      cut::MtChangeReport report = cut::cut_mt(mt, bvh, random_polygon(box, rng, i % 2 == 0), {}, options);
+      ASSERT_GT(report.replaced.size(), 1u) << where;
+      const std::size_t made = report.made_vertices.size(), splits = report.replaced.size();
+      std::vector<std::uint8_t> take(report.replaced.size());
+      for (auto& t : take) t = rng() % 2;
+      const std::size_t taken = static_cast<std::size_t>(std::count(take.begin(), take.end(), 1));
+      const cut::CutRetraction first = cut::retract_replacements(mt, bvh, report, take);
+      EXPECT_EQ(first.revived.size(), taken) << where;
+      EXPECT_EQ(report.replaced.size(), splits - taken) << where;
+      EXPECT_TRUE(cut::validate_replacements(mt, report).ok()) << where << ": "
+                                                               << cut::validate_replacements(mt, report).summary();
+      EXPECT_TRUE(bvh.validate(mt).ok()) << where << ": " << bvh.validate(mt).summary();
+      std::vector<char> used(mt.num_vertices(), 0);
+      for (TetId t : report.made_tets)
+        for (VertId v : mt.tet(t)) used[v.index()] = 1;
+      for (const cut::MadeVertex& m : report.made_vertices) EXPECT_TRUE(used[m.id.index()]) << where;
+      for (const cut::MadeVertex& m : first.unused) EXPECT_FALSE(used[m.id.index()]) << where;
+      EXPECT_EQ(report.made_vertices.size() + first.unused.size(), made) << where;
+      const std::vector<std::uint8_t> rest(report.replaced.size(), 1);
+      const cut::CutRetraction second = cut::retract_replacements(mt, bvh, report, rest);
+      EXPECT_TRUE(report.replaced.empty() && report.made_tets.empty() && report.made_vertices.empty()) << where;
+      EXPECT_EQ(first.unused.size() + second.unused.size(), made) << where;
+      expect_valid(mt, bvh, where);
+      EXPECT_TRUE(canonical_mt(mt) == canonical) << where;
+    }
+  }
+  Mt mt = cut_test_mt("ellipsoid");
+  engine::TetBvh bvh(mt);
+  cut::MtChangeReport decomposing = cut::cut_mt(mt, bvh, random_polygon(mt_box(mt), rng, true));
+  ASSERT_FALSE(decomposing.fragment_splits.empty());
+  const std::vector<std::uint8_t> all(decomposing.replaced.size(), 1);
+  EXPECT_THROW(cut::retract_replacements(mt, bvh, decomposing, all), std::logic_error);
+}
+
 TEST(CutRetraction, AReportThatDoesNotMatchTheMtIsRefused) {
   Mt mt = cut_test_mt("ellipsoid");
   engine::TetBvh bvh(mt);

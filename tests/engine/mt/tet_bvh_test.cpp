@@ -195,6 +195,105 @@ TEST(TetBvh, RollBackUndoesTheEditsSinceTheMark) {
   }
 }
 
+// A stroke's front, split and taken back frame after frame in the same
+// tets (cut/mt/cut_retraction.h, retract_replacements): a tet put back
+// takes its slot again, the pieces of its next split the entries its last
+// pieces left. Fifty rounds over sixty tets wear the index no more than
+// one (without either, 27,000 edits: a rebuild's worth), grow none of its
+// arrays, and leave it exact.
+TEST(TetBvh, SplitsTakenBackAndMadeAgainWearNothing) {
+  Mt mt = test_mt("box");  // a copy to edit
+  TetBvh bvh(mt);
+  std::mt19937 rng(13);
+  std::vector<TetId> tets;
+  while (tets.size() < 60) {
+    const TetId t(static_cast<std::size_t>(rng() % mt.num_tets()));
+    if (std::find(tets.begin(), tets.end(), t) == tets.end()) tets.push_back(t);
+  }
+  mt.reserve(mt.num_vertices() + 50 * tets.size(), mt.num_tets() + 200 * tets.size());
+  bvh.reserve(mt.num_tets() + 200 * tets.size(), 0);
+  std::size_t bytes = 0, edits = 0;
+  for (int round = 0; round < 50; ++round) {
+    std::vector<std::vector<TetId>> pieces;
+    for (TetId t : tets) {
+      pieces.push_back(split_at_centroid(mt, t));
+      bvh.replace(mt, t, pieces.back());
+    }
+    ASSERT_TRUE(bvh.validate(mt).ok()) << "round " << round << ": " << bvh.validate(mt).summary();
+    for (std::size_t i = 0; i < tets.size(); ++i) {
+      const FragId birth = mt.birth(pieces[i][0]), death = mt.death(pieces[i][0]);
+      for (TetId piece : pieces[i]) {
+        bvh.remove(piece);
+        mt.kill_tet(piece);
+      }
+      mt.revive_tet(tets[i], birth, death);
+      bvh.insert(mt, tets[i]);
+    }
+    ASSERT_TRUE(bvh.validate(mt).ok()) << "round " << round << ": " << bvh.validate(mt).summary();
+    if (round == 0) bytes = bvh.bytes(), edits = bvh.edits();
+    EXPECT_EQ(bvh.bytes(), bytes) << "round " << round << ": an array grew";
+    EXPECT_EQ(bvh.edits(), edits) << "round " << round;
+    EXPECT_FALSE(bvh.worn()) << "round " << round;
+  }
+  EXPECT_FALSE(bvh.refresh(mt));
+  EXPECT_EQ(bvh.size(), mt.num_live_tets());
+  for (const Vec3& p : random_points(mt, 150, 17)) ASSERT_EQ(bvh_containing(mt, bvh, p), brute_force_containing(mt, p));
+}
+
+// Rolled back over edits that put a tet back in its slot and gave a
+// removed tet's entry to another: the index as it was at the mark.
+TEST(TetBvh, RollBackUndoesSlotsRetakenAndEntriesReused) {
+  Mt mt = test_mt("box");  // a copy to edit
+  TetBvh bvh(mt);
+  const TetId t(23), u(41);
+  ASSERT_TRUE(mt.alive(t) && mt.alive(u));
+  const FragId birth = mt.birth(t), death = mt.death(t);
+  const std::vector<TetId> first = split_at_centroid(mt, t);
+  bvh.replace(mt, t, first);  // t's slot empty, its pieces listed
+  const FragId u_birth = mt.birth(u), u_death = mt.death(u);
+  const std::vector<TetId> u_first = split_at_centroid(mt, u);
+  bvh.replace(mt, u, u_first);
+  for (TetId piece : u_first) {  // u's leaf left with removed entries
+    bvh.remove(piece);
+    mt.kill_tet(piece);
+  }
+  mt.revive_tet(u, u_birth, u_death);
+  bvh.insert(mt, u);
+  ASSERT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
+  const TetBvh::Mark mark = bvh.mark();
+  const std::vector<TetId> u_pieces = split_at_centroid(mt, u);  // taking the entries u's last pieces left
+  bvh.replace(mt, u, u_pieces);
+  ASSERT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
+  for (TetId piece : first) {  // the split taken back ...
+    bvh.remove(piece);
+    mt.kill_tet(piece);
+  }
+  mt.revive_tet(t, birth, death);
+  bvh.insert(mt, t);
+  ASSERT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
+  const std::vector<TetId> second = split_at_centroid(mt, t);  // ... and made again
+  bvh.replace(mt, t, second);
+  ASSERT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
+  // The MT as at the mark, and the index rolled back to it.
+  for (TetId piece : second) mt.kill_tet(piece);
+  for (TetId piece : u_pieces) mt.kill_tet(piece);
+  mt.revive_tet(u, u_birth, u_death);
+  for (TetId piece : first) mt.revive_tet(piece, birth, death);
+  bvh.roll_back(mark);
+  ASSERT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
+  for (const Vec3& p : random_points(mt, 100, 29)) ASSERT_EQ(bvh_containing(mt, bvh, p), brute_force_containing(mt, p));
+  // And t put back once more takes its slot: no slot is empty and no tet
+  // listed, as in a fresh index.
+  for (TetId piece : first) {
+    bvh.remove(piece);
+    mt.kill_tet(piece);
+  }
+  mt.revive_tet(t, birth, death);
+  bvh.insert(mt, t);
+  ASSERT_TRUE(bvh.validate(mt).ok()) << bvh.validate(mt).summary();
+  EXPECT_EQ(bvh.edits(), 0u) << "a slot left empty or a tet listed";
+}
+
 TEST(TetBvh, ValidateFindsAnIndexThatMissedAnEdit) {
   Mt mt = test_mt("box");
   TetBvh bvh(mt);
