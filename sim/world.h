@@ -11,7 +11,8 @@
 //                part of it that ended (the blade turned or left) is cut
 //                for good, and the part in progress is cut provisionally:
 //                every frame its blade moves, the last frame's provisional
-//                cut is taken back and the part's polygon so far cut afresh
+//                cut is taken back (of a part's front, the splits the grown
+//                polygon changes) and the part's polygon so far cut afresh
 //                (cut/mt/cut_retraction.h says why), so the incision opens
 //                behind the blade in the frame it passes. Polygons go from
 //                the deformed tissue to rest space (rest_space_cut.h says

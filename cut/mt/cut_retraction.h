@@ -7,8 +7,9 @@
 // "Progressive cutting") split every tet once from its original: while a
 // stroke's straight part grows, each frame cuts the part's front (or, before
 // its plane is fixed, its whole polygon so far) provisionally, and the next
-// frame retracts that cut and cuts the grown part afresh, so no piece of a
-// provisional split is ever cut again (part_record.h).
+// frame retracts that cut (of a front, only the splits the grown polygon
+// changes: retract_replacements) and cuts the grown part afresh, so no
+// piece of a provisional split is ever cut again (part_record.h).
 //
 // Why vertices stay. The vertices the cut made are left in the MT, unused,
 // and its pieces keep their slots, dead (a tet is never erased, only

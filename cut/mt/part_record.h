@@ -10,8 +10,9 @@
 // part, since they share one plane and only grow. So each frame is cut in
 // two: the tets crossed completely are committed, split for good, and join
 // the record; the tets of the front (the blade's segment, a vertex on the
-// cut, the outline's sides) are split provisionally and taken back the next
-// frame, to be split afresh from their originals. The record holds what the
+// cut, the outline's sides) are split provisionally, and those whose
+// configuration the next frame changes are taken back and split afresh
+// from their originals (the held front, below). The record holds what the
 // next frames must agree with:
 //   - the plane: the part's first polygon's, which every later polygon of
 //     the part is projected onto (CutPolygon::on_plane_of), so exact sides

@@ -22,7 +22,8 @@
 //
 // Provisional cuts. Progressive cutting (DESIGN.md, "Progressive cutting";
 // cut_retraction.h, part_record.h) cuts a growing stroke's part every frame
-// and takes the last frame's provisional cut back first: submit_provisional()
+// and takes the last frame's provisional cut back first (of a part's front,
+// what the grown polygon changes: recut()): submit_provisional()
 // queues a cut that is held, once started, with everything it changed, until
 // retract() undoes it (the MT as before it, up to numbering). At most one is
 // held, and it is the last cut: retract() before submitting anything else.
