@@ -1,6 +1,5 @@
 #include "cut/mt/cut_retraction.h"
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -124,21 +123,6 @@ CutRetraction retract_replacements(engine::Mt& mt, engine::TetBvh& bvh, MtChange
     bvh.insert(mt, r.old);
     out.revived.push_back(r.old);
   }
-  // Made vertices that no piece left uses (made_vertices is in id order;
-  // most of a piece's corners are the mesh's own, below the first).
-  std::vector<std::uint8_t> used(kept.made_vertices.size(), 0);
-  const auto by_id = [](const MadeVertex& m, VertId v) { return m.id < v; };
-  if (!kept.made_vertices.empty())
-    for (TetId t : kept.made_tets)
-      for (VertId v : mt.tet(t)) {
-        if (v < kept.made_vertices.front().id) continue;
-        const auto it = std::lower_bound(kept.made_vertices.begin(), kept.made_vertices.end(), v, by_id);
-        if (it != kept.made_vertices.end() && it->id == v) used[static_cast<std::size_t>(it - kept.made_vertices.begin())] = 1;
-      }
-  std::vector<MadeVertex> made;
-  for (std::size_t i = 0; i < kept.made_vertices.size(); ++i)
-    (used[i] ? made : out.unused).push_back(std::move(kept.made_vertices[i]));
-  kept.made_vertices = std::move(made);
   cut = std::move(kept);
   return out;
 }

@@ -54,9 +54,9 @@ CutRetraction retract_cut(engine::Mt& mt, engine::TetBvh& bvh, const MtChangeRep
 
 // Takes back the replacements of a provisional cut (one that decomposed
 // no fragment) that `take` marks (one entry per cut.replaced), tet by tet,
-// and drops them from `cut`, with the made vertices no piece left uses
-// (the retraction's `unused`) and its processed fragments and counts: what
-// is left is what it holds.
+// and drops them from `cut`, with its processed fragments and counts: what
+// is left is what it holds, and every vertex it made (which of them the
+// pieces left use is the holder's to say: PartRecord::hold).
 // Later cuts may have edited the MT since (a part's commits, which may
 // decompose the fragments its pieces are in): each tet revived goes back
 // to the fragments its pieces are in now, one birth and one death, as a

@@ -42,7 +42,7 @@ void PartRecord::add(const Mt& mt, const MtChangeReport& commit, const MtChangeR
   owed_.add(mt, commit, held);
 }
 
-void PartRecord::hold(const Mt& mt, const MtChangeReport& front) {
+std::vector<MadeVertex> PartRecord::hold(const Mt& mt, MtChangeReport& front) {
   release();
   if (owned_.size() < mt.num_tets()) owned_.resize(mt.num_tets(), 0);
   if (made_.size() < mt.num_vertices()) made_.resize(mt.num_vertices(), 0);
@@ -53,14 +53,22 @@ void PartRecord::hold(const Mt& mt, const MtChangeReport& front) {
     for (VertId v : mt.tet(t))
       if (made_[v.index()] == 0) made_[v.index()] = 3;  // used, marked below when the front made it
   }
-  for (const MadeVertex& made : front.made_vertices)
-    if (made_[made.id.index()] == 3) {
-      made_[made.id.index()] = 2;
-      held_points_.emplace(made.key, made.id);
+  std::vector<MadeVertex> used, unused;
+  used.reserve(front.made_vertices.size());
+  for (MadeVertex& made : front.made_vertices) {
+    if (made_[made.id.index()] != 3) {
+      unused.push_back(std::move(made));
+      continue;
     }
+    made_[made.id.index()] = 2;
+    held_points_.emplace(made.key, made.id);
+    used.push_back(std::move(made));
+  }
+  front.made_vertices = std::move(used);
   for (TetId t : held_tets_)
     for (VertId v : mt.tet(t))
       if (made_[v.index()] == 3) made_[v.index()] = 0;
+  return unused;
 }
 
 void PartRecord::release() {

@@ -110,8 +110,9 @@ class PartRecord {
   void add(const Mt& mt, const MtChangeReport& commit, const MtChangeReport* held = nullptr);
   // The front kept from the last frame (`front`: its replacements, and the
   // points its cuts made): its pieces and the points they use are held,
-  // in place of what was held before. release(): none is.
-  void hold(const Mt& mt, const MtChangeReport& front);
+  // in place of what was held before. The points no piece uses leave
+  // `front`, returned. release(): none is.
+  std::vector<MadeVertex> hold(const Mt& mt, MtChangeReport& front);
   void release();
 
   // A frame taken back (its commit or front refused, the commit retracted

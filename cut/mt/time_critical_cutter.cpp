@@ -106,6 +106,7 @@ std::optional<CutRetraction> TimeCriticalCutter::retract(Mt& mt, TetBvh& bvh) {
   if (kept_) {  // the part's front kept this frame, its own front not finished
     std::vector<std::uint8_t> all(kept_->changes.replaced.size(), 1);
     CutRetraction more = retract_replacements(mt, bvh, kept_->changes, all);
+    more.unused = std::move(kept_->changes.made_vertices);
     kept_->record->release();
     keep_committed(more, kept_->record.get());
     kept_.reset();
@@ -123,6 +124,7 @@ CutRetraction TimeCriticalCutter::take_back(Mt& mt, TetBvh& bvh, Transaction& tx
   if (tx.combined) {
     std::vector<std::uint8_t> all(tx.changes.replaced.size(), 1);
     out = retract_replacements(mt, bvh, tx.changes, all);
+    out.unused = std::move(tx.changes.made_vertices);
   } else {
     out = retract_cut(mt, bvh, tx.changes, tx.fragments_before, tx.bvh_mark ? &*tx.bvh_mark : nullptr);
   }
@@ -160,11 +162,9 @@ std::optional<CutRetraction> TimeCriticalCutter::keep_front(Mt& mt, TetBvh& bvh,
       kept_front_splits(mt, tx.changes, polygon, record, def_.cut.snap, reach, &workspace_.classifier);
   for (std::uint8_t& t : take) t = !t;
   CutRetraction out = retract_replacements(mt, bvh, tx.changes, take);
+  out.unused = record.hold(mt, tx.changes);
+  if (!tx.changes.replaced.empty()) kept_ = Kept{part_->record, std::move(tx.changes)};
   keep_committed(out, &record);
-  if (!tx.changes.replaced.empty()) {
-    record.hold(mt, tx.changes);
-    kept_ = Kept{part_->record, std::move(tx.changes)};
-  }
   return out;
 }
 
@@ -619,7 +619,7 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
           held_->bvh_mark.reset();
           kept_.reset();
         }
-        a.record->hold(mt, held_->changes);
+        a.record->hold(mt, held_->changes);  // its points all in use: made by its pieces or kept
       }
     }
     active_.reset();  // `a` is gone from here
