@@ -163,6 +163,13 @@ std::optional<CutRetraction> TimeCriticalCutter::keep_front(Mt& mt, TetBvh& bvh,
   for (std::uint8_t& t : take) t = !t;
   CutRetraction out = retract_replacements(mt, bvh, tx.changes, take);
   out.unused = record.hold(mt, tx.changes);
+  // The front's tets no commit owns and the record does not hold are the
+  // ones taken back: the frame's commit searches them, and where the
+  // polygon grew.
+  engine::Aabb front;
+  for (TetId t : out.revived)
+    for (VertId v : mt.tet(t)) front.extend(mt.position(v));
+  record.set_front(front);
   if (!tx.changes.replaced.empty()) kept_ = Kept{part_->record, std::move(tx.changes)};
   keep_committed(out, &record);
   return out;
