@@ -1,5 +1,6 @@
 #include "cut/mt/cut_retraction.h"
 
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -91,6 +92,14 @@ CutRetraction retract_cut(engine::Mt& mt, engine::TetBvh& bvh, const MtChangeRep
   }
   out.unused = cut.made_vertices;
   return out;
+}
+
+void CutRetraction::append(CutRetraction&& later) {
+  revived.insert(revived.end(), later.revived.begin(), later.revived.end());
+  killed.insert(killed.end(), later.killed.begin(), later.killed.end());
+  merged.insert(merged.end(), later.merged.begin(), later.merged.end());
+  fragments_removed += later.fragments_removed;
+  unused.insert(unused.end(), std::make_move_iterator(later.unused.begin()), std::make_move_iterator(later.unused.end()));
 }
 
 CutRetraction retract_replacements(engine::Mt& mt, engine::TetBvh& bvh, MtChangeReport& cut,

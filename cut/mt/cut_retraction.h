@@ -40,6 +40,9 @@ struct CutRetraction {
   // later cut took too, such as a part's commit, is still used by that
   // cut's pieces: the time-critical cutter drops those from the list).
   std::vector<MadeVertex> unused;
+
+  // Adds what a later retraction took back (a cut taken back after this one).
+  void append(CutRetraction&& later);
 };
 
 // Undoes `cut`, every change a provisional cut made (all its calls' reports

@@ -7,73 +7,74 @@
 namespace mtcut::cut {
 
 void PartRecord::add(const Mt& mt, const MtChangeReport& commit, const MtChangeReport* held) {
-  if (owned_.size() < mt.num_tets()) owned_.resize(mt.num_tets(), 0);
+  if (owned_.size() < mt.num_tets()) owned_.resize(mt.num_tets(), kNone);
   for (TetId t : commit.made_tets) {
-    num_owned_ += owned_[t.index()] == 0;
-    owned_[t.index()] = 1;
+    num_owned_ += owned_[t.index()] == kNone;
+    owned_[t.index()] = kCommitted;
   }
-  if (made_.size() < mt.num_vertices()) made_.resize(mt.num_vertices(), 0);
+  if (made_.size() < mt.num_vertices()) made_.resize(mt.num_vertices(), kNone);
   for (const MadeVertex& made : commit.made_vertices) {
     points_.emplace(made.key, made.id);
-    made_[made.id.index()] = 1;
+    made_[made.id.index()] = kCommitted;
   }
   // A held point that a committed piece uses is committed with it: the
   // held front may be taken back, the committed crack never.
   promoted_.clear();
+  bool promoting = false;
   if (!held_points_.empty())
     for (TetId t : commit.made_tets)
       for (VertId v : mt.tet(t))
-        if (made_[v.index()] == 2) {
-          made_[v.index()] = 1;
-          promoted_.emplace_back(PointKey{}, v);
+        if (made_[v.index()] == kHeld) {
+          made_[v.index()] = kCommitted;
+          promoting = true;
         }
-  if (!promoted_.empty()) {
+  if (promoting)
     for (auto it = held_points_.begin(); it != held_points_.end();) {
-      if (made_[it->second.index()] != 1) {
+      if (made_[it->second.index()] != kCommitted) {
         ++it;
         continue;
       }
       points_.emplace(it->first, it->second);
-      for (auto& [key, v] : promoted_)
-        if (v == it->second) key = it->first;
+      promoted_.emplace_back(it->first, it->second);
       held_points_.erase(it++);
     }
-  }
   owed_.add(mt, commit, held);
 }
 
 std::vector<MadeVertex> PartRecord::hold(const Mt& mt, MtChangeReport& front) {
   release();
-  if (owned_.size() < mt.num_tets()) owned_.resize(mt.num_tets(), 0);
-  if (made_.size() < mt.num_vertices()) made_.resize(mt.num_vertices(), 0);
+  if (owned_.size() < mt.num_tets()) owned_.resize(mt.num_tets(), kNone);
+  if (made_.size() < mt.num_vertices()) made_.resize(mt.num_vertices(), kNone);
   for (TetId t : front.made_tets) {
-    if (owned_[t.index()] != 0) throw std::logic_error("PartRecord::hold: a held piece is committed");
-    owned_[t.index()] = 2;
+    if (owned_[t.index()] != kNone) throw std::logic_error("PartRecord::hold: a held piece is committed");
+    owned_[t.index()] = kHeld;
     held_tets_.push_back(t);
     for (VertId v : mt.tet(t))
-      if (made_[v.index()] == 0) made_[v.index()] = 3;  // used, marked below when the front made it
+      if (made_[v.index()] == kNone) made_[v.index()] = kUsed;
   }
+  // The front's points its pieces use are held; the marks on the others
+  // (the mesh's own vertices) go.
   std::vector<MadeVertex> used, unused;
   used.reserve(front.made_vertices.size());
   for (MadeVertex& made : front.made_vertices) {
-    if (made_[made.id.index()] != 3) {
+    if (made_[made.id.index()] != kUsed) {
       unused.push_back(std::move(made));
       continue;
     }
-    made_[made.id.index()] = 2;
+    made_[made.id.index()] = kHeld;
     held_points_.emplace(made.key, made.id);
     used.push_back(std::move(made));
   }
   front.made_vertices = std::move(used);
   for (TetId t : held_tets_)
     for (VertId v : mt.tet(t))
-      if (made_[v.index()] == 3) made_[v.index()] = 0;
+      if (made_[v.index()] == kUsed) made_[v.index()] = kNone;
   return unused;
 }
 
 void PartRecord::release() {
-  for (TetId t : held_tets_) owned_[t.index()] = 0;
-  for (const auto& [key, v] : held_points_) made_[v.index()] = 0;
+  for (TetId t : held_tets_) owned_[t.index()] = kNone;
+  for (const auto& [key, v] : held_points_) made_[v.index()] = kNone;
   held_tets_.clear();
   held_points_.clear();
 }
@@ -82,17 +83,17 @@ void PartRecord::take_back(const MtChangeReport* commit, Before before) {
   if (commit) {
     for (TetId t : commit->made_tets)
       if (t.index() < owned_.size() && owned_[t.index()]) {
-        owned_[t.index()] = 0;
+        owned_[t.index()] = kNone;
         --num_owned_;
       }
     for (const MadeVertex& made : commit->made_vertices)
       if (made.id.index() < made_.size() && made_[made.id.index()]) {
         points_.erase(made.key);
-        made_[made.id.index()] = 0;
+        made_[made.id.index()] = kNone;
       }
     for (const auto& [key, v] : promoted_) {
       points_.erase(key);
-      made_[v.index()] = 2;
+      made_[v.index()] = kHeld;
       held_points_.emplace(key, v);
     }
   }
@@ -119,11 +120,11 @@ void PartRecord::renumber(const Mt::Compaction& compaction) {
   promoted_.clear();
   std::vector<std::uint8_t> owned(owned_.size(), 0);
   for (std::size_t t = 0; t < owned_.size(); ++t)
-    if (owned_[t] && compaction.tet_map[t] >= 0) owned[static_cast<std::size_t>(compaction.tet_map[t])] = 1;
+    if (owned_[t] && compaction.tet_map[t] >= 0) owned[static_cast<std::size_t>(compaction.tet_map[t])] = kCommitted;
   owned_ = std::move(owned);
   std::vector<std::uint8_t> made(made_.size(), 0);
   for (std::size_t v = 0; v < made_.size(); ++v)
-    if (made_[v] && compaction.vertex_map[v] >= 0) made[static_cast<std::size_t>(compaction.vertex_map[v])] = 1;
+    if (made_[v] && compaction.vertex_map[v] >= 0) made[static_cast<std::size_t>(compaction.vertex_map[v])] = kCommitted;
   made_ = std::move(made);
   // Keys name vertices by id (sorted; the renumbering keeps their order).
   absl::flat_hash_map<PointKey, VertId, PointKeyHash> points;
@@ -145,8 +146,8 @@ engine::ValidationReport PartRecord::validate(const Mt& mt, const MtChangeReport
   std::size_t held = 0;
   for (std::size_t t = 0; t < owned_.size(); ++t) {
     if (!owned_[t]) continue;
-    owned += owned_[t] == 1;
-    held += owned_[t] == 2;
+    owned += owned_[t] == kCommitted;
+    held += owned_[t] == kHeld;
     if (t >= mt.num_tets() || !mt.alive(TetId(t))) {
       report.add("part record: committed or held piece " + std::to_string(t) + " is not a live tet");
       continue;
@@ -156,16 +157,16 @@ engine::ValidationReport PartRecord::validate(const Mt& mt, const MtChangeReport
   if (owned != num_owned_) report.add("part record: committed pieces miscounted");
   if (held != held_tets_.size()) report.add("part record: held pieces miscounted");
   for (const auto& [key, v] : held_points_)
-    if (!v.valid() || v.index() >= mt.num_vertices() || !(used[v.index()] & 2) || made_[v.index()] != 2)
+    if (!v.valid() || v.index() >= mt.num_vertices() || !(used[v.index()] & kHeld) || made_[v.index()] != kHeld)
       report.add("part record: held point " + std::to_string(v.value) + " used by no held piece, or not marked");
   std::size_t made = 0;
   for (const auto& [key, v] : points_) {
-    if (!v.valid() || v.index() >= mt.num_vertices() || !(used[v.index()] & 1))
+    if (!v.valid() || v.index() >= mt.num_vertices() || !(used[v.index()] & kCommitted))
       report.add("part record: committed point " + std::to_string(v.value) + " used by no committed piece");
-    else if (made_[v.index()] != 1)
+    else if (made_[v.index()] != kCommitted)
       report.add("part record: committed point " + std::to_string(v.value) + " not marked made");
   }
-  for (std::uint8_t m : made_) made += m == 1;
+  for (std::uint8_t m : made_) made += m == kCommitted;
   if (made != points_.size()) report.add("part record: committed points miscounted");
   for (auto& p : owed_.validate(mt, since).problems) report.add("part record: " + p);
   return report;

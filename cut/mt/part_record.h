@@ -69,9 +69,9 @@ class PartRecord {
   // The part's plane (its first polygon).
   const CutPolygon& plane() const { return plane_; }
   // t is a committed piece or a held one: no cut of the part searches it.
-  bool owns(TetId t) const { return t.index() < owned_.size() && owned_[t.index()] != 0; }
+  bool owns(TetId t) const { return t.index() < owned_.size() && owned_[t.index()] != kNone; }
   // v is a committed or held point (of the part's one planar crack).
-  bool made(VertId v) const { return v.index() < made_.size() && made_[v.index()] != 0; }
+  bool made(VertId v) const { return v.index() < made_.size() && made_[v.index()] != kNone; }
   // The committed or held point of `key`, or none.
   VertId point(const PointKey& key) const {
     if (const auto it = points_.find(key); it != points_.end()) return it->second;
@@ -138,10 +138,13 @@ class PartRecord {
   engine::ValidationReport validate(const Mt& mt, const MtChangeReport* since = nullptr) const;
 
  private:
+  // What owned_ and made_ say of a tet or vertex (kUsed: hold()'s mark,
+  // only while it runs).
+  enum Mark : std::uint8_t { kNone = 0, kCommitted = 1, kHeld = 2, kUsed = 3 };
   CutPolygon plane_;
-  std::vector<std::uint8_t> owned_;  // (tets) 1: a committed piece, 2: a held one
+  std::vector<std::uint8_t> owned_;  // (tets) kCommitted or kHeld pieces
   std::size_t num_owned_ = 0;
-  std::vector<std::uint8_t> made_;   // (vertices) 1: a committed point, 2: a held one
+  std::vector<std::uint8_t> made_;   // (vertices) kCommitted or kHeld points
   std::optional<engine::Aabb> front_;
   FragmentLedger owed_;
   bool met_ = false;
