@@ -103,12 +103,14 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
   // are kept (keep_front), unless the part has met an older crack (its
   // front is checked whole against the commits' ledger) or another cut is
   // queued or in progress (it would search the kept pieces).
+  // The part in progress, grown by this frame (none when a part ended, or
+  // when the frame's polygon has no area on its plane).
+  std::optional<CutPolygon> grown;
+  if (ended.empty() && current && part_) grown = on_part_plane(*part_, crossing_ ? past(*current, *crossing_) : *current);
   std::optional<CutRetraction> out;
-  if (ended.empty() && current && part_ && held_ && held_->front_of == part_->record && !active_ &&
-      queue_.empty() && !part_->record->met_old_crack()) {
-    if (const std::optional<CutPolygon> on = on_part_plane(*part_, crossing_ ? past(*current, *crossing_) : *current))
-      out = keep_front(mt, bvh, *on);
-  }
+  if (grown && held_ && held_->front_of == part_->record && !active_ && queue_.empty() &&
+      !part_->record->met_old_crack())
+    out = keep_front(mt, bvh, *grown);
   if (!out) out = retract(mt, bvh);
   for (std::size_t i = 0; i < ended.size(); ++i) {
     // The polygon cut for good: the part's (the first ended one, if a part
@@ -159,10 +161,9 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     crossing_.reset();
     return out;
   }
-  if (part_) {
+  if (part_) {  // no part ended: `grown` is this part's
     CutPolygon before = part_->last;
-    const CutPolygon here = crossing_ ? past(*current, *crossing_) : *current;
-    if (const std::optional<CutPolygon> on = on_part_plane(*part_, here)) part_->last = *on;
+    if (grown) part_->last = *grown;
     submit_part(*part_, std::move(before));
     return out;
   }
