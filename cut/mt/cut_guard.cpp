@@ -52,20 +52,36 @@ Stars stars_of(const Mt& mt, const engine::TetBvh& bvh, std::span<const MtChange
           if (v.value >= *first_new && std::binary_search(first_new, out.vertices.end(), v.value))
             around.emplace_back(v.value, t);
       }
-  for (auto it = out.vertices.begin(); it != first_new; ++it) {
-    const VertId v(*it);
-    // A box query at the point, not for_each_containing: a tet's own corner
-    // is a degenerate case for its exact inside test, and every tet here has v
-    // as a corner.
-    engine::Aabb at;
-    at.extend(mt.position(v));
-    bvh.for_each_overlapping(mt, at, [&](TetId t) {
+  // Older vertices are queried in groups of neighbours (halving their set
+  // along its box's longest axis down to kGroup), one box query per group:
+  // each tet around a vertex has the vertex in its box, so the group's box
+  // finds them all, and neighbours share most of the walk.
+  std::vector<std::int32_t> older(out.vertices.begin(), first_new);
+  constexpr std::size_t kGroup = 8;
+  const auto group = [&](auto&& self, std::span<std::int32_t> g) -> void {
+    engine::Aabb box;
+    for (std::int32_t v : g) box.extend(mt.position(VertId(v)));
+    if (g.size() > kGroup) {
+      const Vec3 size = box.hi - box.lo;
+      int axis = 0;
+      for (int k = 1; k < 3; ++k)
+        if (size[k] > size[axis]) axis = k;
+      const auto mid = g.begin() + static_cast<std::ptrdiff_t>(g.size() / 2);
+      std::nth_element(g.begin(), mid, g.end(), [&](std::int32_t a, std::int32_t b) {
+        return mt.position(VertId(a))[axis] < mt.position(VertId(b))[axis];
+      });
+      self(self, g.first(g.size() / 2));
+      self(self, g.subspan(g.size() / 2));
+      return;
+    }
+    bvh.for_each_overlapping(mt, box, [&](TetId t) {
       if (!mt.alive(t)) return true;
-      const engine::Tet& corners = mt.tet(t);
-      if (std::find(corners.begin(), corners.end(), v) != corners.end()) around.emplace_back(v.value, t);
+      for (VertId c : mt.tet(t))
+        if (std::find(g.begin(), g.end(), c.value) != g.end()) around.emplace_back(c.value, t);
       return true;
     });
-  }
+  };
+  if (!older.empty()) group(group, older);
   std::sort(around.begin(), around.end());
   out.first.assign(out.vertices.size() + 1, 0);
   out.tets.reserve(around.size());
@@ -150,7 +166,7 @@ const FragmentLedger* ledger_checked(const PartRecord* part) {
 
 engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
                                    std::size_t first_cut_vertex, std::size_t first_new_vertex, const PartRecord* part,
-                                   CutSelect select, const FrameCommit* commit) {
+                                   CutSelect select, const FrameCommit* commit, const MtChangeReport* kept) {
   engine::ValidationReport report;
   const auto earlier = [&](VertId v) {
     return v.index() >= first_cut_vertex && v.index() < first_new_vertex && !(part && part->made(v));
@@ -207,7 +223,12 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   const std::vector<FragId> decomposed = decomposed_fragments(cut);
   const FragmentLedger* owed = ledger_checked(part);
   if (select != CutSelect::kComplete && owed) {
-    for (FragId f : owed->unbalanced_with(mt, cut, decomposed))
+    MtChangeReport whole;
+    if (kept) {
+      whole = *kept;
+      whole.append(cut);
+    }
+    for (FragId f : owed->unbalanced_with(mt, kept ? whole : cut, decomposed))
       report.add("cut: fragment " + std::to_string(f.value) +
                  ": its tets do not fill the region of the tets it replaces");
   }

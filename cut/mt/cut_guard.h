@@ -75,9 +75,15 @@ const FragmentLedger* ledger_checked(const PartRecord* part);
 // planar crack as this cut's, not an earlier crack, and whose commits owe
 // the fragments what the ledger holds; `select`: which of the part's cuts
 // (a commit's fragments and edges are checked by the front after it, given
-// `commit`). Empty when the cut may be kept.
+// `commit`). `kept`: a front's splits kept from earlier frames (the
+// part's, held in its record), checked when they were made; they join the
+// cut where the fragments' balance is checked, which sums the whole front.
+// Their edges are not checked again: a tet around one that changed since
+// is a piece of this cut or of `commit` with that edge. Empty when the cut
+// may be kept.
 engine::ValidationReport check_cut(const engine::Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
                                    std::size_t first_cut_vertex, std::size_t first_new_vertex,
-                                   const PartRecord* part, CutSelect select, const FrameCommit* commit = nullptr);
+                                   const PartRecord* part, CutSelect select, const FrameCommit* commit = nullptr,
+                                   const MtChangeReport* kept = nullptr);
 
 }  // namespace mtcut::cut

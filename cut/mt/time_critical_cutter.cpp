@@ -100,16 +100,14 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     throw std::invalid_argument("TimeCriticalCutter::recut: " + std::to_string(turned_back.size()) +
                                 " turn flags for " + std::to_string(ended.size()) + " ended parts");
   // The part in progress grows: its front's splits that stay as they are
-  // are kept (keep_front), unless the part has met an older crack (its
-  // front is checked whole against the commits' ledger) or another cut is
-  // queued or in progress (it would search the kept pieces).
+  // are kept (keep_front), unless another cut is queued or in progress (it
+  // would search the kept pieces).
   // The part in progress, grown by this frame (none when a part ended, or
   // when the frame's polygon has no area on its plane).
   std::optional<CutPolygon> grown;
   if (ended.empty() && current && part_) grown = on_part_plane(*part_, crossing_ ? past(*current, *crossing_) : *current);
   std::optional<CutRetraction> out;
-  if (grown && held_ && held_->front_of == part_->record && !active_ && queue_.empty() &&
-      !part_->record->met_old_crack())
+  if (grown && held_ && held_->front_of == part_->record && !active_ && queue_.empty())
     out = keep_front(mt, bvh, *grown);
   if (!out) out = retract(mt, bvh);
   for (std::size_t i = 0; i < ended.size(); ++i) {
@@ -460,15 +458,9 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     // crack, checked when they were made, but where the fragments' balance
     // is checked (cut_guard.h) the whole front pays what the commits owe.
     const bool with_kept = a.select == CutSelect::kFront && kept_ && kept_->record == a.record;
-    const bool whole = with_kept && ledger_checked(a.record.get());
-    MtChangeReport whole_front;
-    if (whole) {
-      whole_front = kept_->changes;
-      whole_front.append(a.tx.changes);
-    }
     const engine::ValidationReport guard =
-        check_cut(mt, bvh, whole ? whole_front : a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex,
-                  a.record.get(), a.select, with_commit ? &commit : nullptr);
+        check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex, a.record.get(), a.select,
+                  with_commit ? &commit : nullptr, with_kept ? &kept_->changes : nullptr);
     if (!guard.ok()) {
       result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &*a.tx.bvh_mark);
       result.refused_reported_vertices = a.tx.changes.made_vertices.size() - call.made_vertices.size();

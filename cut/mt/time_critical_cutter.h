@@ -123,9 +123,9 @@ class TimeCriticalCutter {
   // in the configuration they were made from stay (kept_front_splits: most
   // of them, the blade moving less than a tet a frame), held in the record;
   // only the others are taken back, and split afresh by the frame's commit
-  // or front. A part that has met an older crack takes its whole front
-  // back each frame (its front pays its commits' ledger whole). Until then the whole polygon is cut
-  // provisionally. A polygon of the part that is not on the record's plane
+  // or front; where the part has met an older crack, the kept splits and
+  // the new ones together pay its commits' ledger (cut_guard.h). Until the
+  // plane is fixed the whole polygon is cut provisionally. A polygon of the part that is not on the record's plane
   // (the World carries each frame's polygon to rest space anew) is
   // projected onto it, joined with the part's last polygon.
   // Turns. Where the stroke turns gently (less than kMaxContinuedTurn), the

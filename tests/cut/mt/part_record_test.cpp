@@ -118,13 +118,60 @@ TEST(PartRecord, AFrameResplitsOnlyTheFront) {
   }
 }
 
+// What a part's frames took back of the front they found held: over the
+// stroke `path` in `steps` frames, the frames of a part with a front held
+// (only those after the part met an older crack, with `met_only`), the
+// pieces held and those taken back. The record holds the front's pieces
+// between frames and nothing once the stroke has ended.
+struct HeldFront {
+  std::size_t frames = 0, held = 0, taken = 0;
+  double share() const { return static_cast<double>(taken) / static_cast<double>(std::max<std::size_t>(held, 1)); }
+};
+HeldFront held_front_taken_back(const Mt& original, const Path& path, int steps, const std::string& where,
+                                bool met_only) {
+  HeldFront out;
+  Mt mt = original;
+  engine::TetBvh bvh(mt);
+  Frontier frontier = Frontier::coarsest(mt);
+  cut::StrokeSweep stroke;
+  cut::TimeCriticalCutter cutter;
+  for (int k = 0; k <= steps + 1; ++k) {
+    cut::BladePose pose = path(std::min(1.0, static_cast<double>(k) / steps));
+    pose.engaged = k <= steps;
+    const cut::PartRecord* before = cutter.part_record();
+    const cut::MtChangeReport* front = before ? cutter.provisional_changes() : nullptr;
+    const std::size_t held_before = front ? front->made_tets.size() : 0;
+    const bool counted = held_before > 0 && (!met_only || before->met_old_crack());
+    const cut::StrokeStep step = cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, std::span(&pose, 1));
+    if (const cut::PartRecord* record = cutter.part_record()) {
+      const cut::MtChangeReport* now = cutter.provisional_changes();
+      EXPECT_EQ(record->num_held(), now ? now->made_tets.size() : 0u) << where << " step " << k;
+      if (counted && record == before) {  // a frame of the part that found a front held
+        ++out.frames;
+        out.held += held_before;
+        out.taken += step.retraction ? step.retraction->killed.size() : 0;
+      }
+    }
+    if (step.recut) {
+      const auto report = mt.validate();
+      EXPECT_TRUE(report.ok()) << where << " step " << k << ": " << report.summary();
+      if (!report.ok()) break;
+    }
+  }
+  EXPECT_EQ(cutter.part_record(), nullptr) << where;
+  EXPECT_FALSE(cutter.provisional_held()) << where;
+  EXPECT_EQ(cutter.cuts_refused(), 0u) << where;
+  std::printf("[ report   ] %s: %zu frames, %zu of %zu held front pieces taken back (%.1f%%)\n", where.c_str(),
+              out.frames, out.taken, out.held, 100.0 * out.share());
+  return out;
+}
+
 // From frame to frame the blade moves less than a tet, and most of the
 // front is split as it was (TimeCriticalCutter::recut keeps those splits,
 // held in the record): over a straight part in 240 frames, through the
 // object and with the tip inside, a frame takes back under half of the
 // pieces the front held (about 6 to 35% of the tets change configuration
-// from frame to frame at 240 steps), and the record holds the front's
-// pieces between frames and nothing once the stroke has ended.
+// from frame to frame at 240 steps).
 TEST(PartRecord, AFrameKeepsTheFrontSplitsItsGrownPolygonLeavesAsTheyWere) {
   for (const std::string name : {"ellipsoid", "liver", "box"}) {
     const Mt& original = cut_test_mt(name);
@@ -132,36 +179,10 @@ TEST(PartRecord, AFrameKeepsTheFrontSplitsItsGrownPolygonLeavesAsTheyWere) {
       const std::string where = name + " depth " + std::to_string(depth);
       const engine::Aabb box = mt_box(original);
       const Path path = [&](double s) { return blade_at(box, s, depth, 0.15, Vec3(0.8, 0.55, 0)); };
-      Mt mt = original;
-      engine::TetBvh bvh(mt);
-      Frontier frontier = Frontier::coarsest(mt);
-      cut::StrokeSweep stroke;
-      cut::TimeCriticalCutter cutter;
       constexpr int kSteps = 240;
-      std::size_t held = 0, taken = 0, frames = 0;
-      for (int k = 0; k <= kSteps + 1; ++k) {
-        cut::BladePose pose = path(std::min(1.0, static_cast<double>(k) / kSteps));
-        pose.engaged = k <= kSteps;
-        const cut::MtChangeReport* front = cutter.part_record() ? cutter.provisional_changes() : nullptr;
-        const std::size_t held_before = front ? front->made_tets.size() : 0;
-        const cut::StrokeStep step = cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, std::span(&pose, 1));
-        if (const cut::PartRecord* record = cutter.part_record()) {
-          const cut::MtChangeReport* now = cutter.provisional_changes();
-          EXPECT_EQ(record->num_held(), now ? now->made_tets.size() : 0u) << where << " step " << k;
-          if (held_before > 0) {  // a frame of the part that found a front held
-            ++frames;
-            held += held_before;
-            taken += step.retraction ? step.retraction->killed.size() : 0;
-          }
-        }
-      }
-      EXPECT_TRUE(mt.validate().ok()) << where << ": " << mt.validate().summary();
-      EXPECT_EQ(cutter.part_record(), nullptr) << where;
-      EXPECT_FALSE(cutter.provisional_held()) << where;
-      EXPECT_GT(frames, kSteps / 2u) << where;
-      EXPECT_LT(2 * taken, held) << where << ": " << taken << " of " << held << " held pieces taken back";
-      std::printf("[ report   ] %s: %zu frames, %zu of %zu held front pieces taken back (%.1f%%)\n", where.c_str(),
-                  frames, taken, held, 100.0 * static_cast<double>(taken) / static_cast<double>(std::max<std::size_t>(held, 1)));
+      const HeldFront h = held_front_taken_back(original, path, kSteps, where, false);
+      EXPECT_GT(h.frames, kSteps / 2u) << where;
+      EXPECT_LT(2 * h.taken, h.held) << where << ": " << h.taken << " of " << h.held << " held pieces taken back";
     }
   }
 }
@@ -234,6 +255,26 @@ TEST(PartRecord, APartAfterASharpTurnCommitsWhereItMeetsTheFirstCrack) {
                     "%zu committed pieces, %zu pieces\n",
                     where.c_str(), met, frames, most_front, committed, r.pieces);
       }
+    }
+  }
+}
+
+// A part that has met an older crack keeps its front's splits too: its
+// fronts are checked against what its commits owe, summed over the whole
+// front (the splits kept and those made afresh, cut_guard.h), so a frame
+// of the L's second part, after it crossed the first crack, takes back
+// under half of the front it found held, as a straight part's frame does.
+TEST(PartRecord, APartThatMetAnOlderCrackKeepsItsFrontToo) {
+  for (const std::string name : {"ellipsoid", "box"}) {  // the liver's L turns outside it
+    const Mt& original = cut_test_mt(name);
+    for (const double depth : {0.6, 1.1}) {
+      const std::string where = name + " L, depth " + std::to_string(depth);
+      const engine::Aabb box = mt_box(original);
+      const Path path = [&](double s) { return l_blade_at(box, s, depth); };
+      constexpr int kSteps = 240;
+      const HeldFront h = held_front_taken_back(original, path, kSteps, where, true);
+      EXPECT_GT(h.frames, kSteps / 4u) << where << ": the part after the turn met the first crack late or never";
+      EXPECT_LT(2 * h.taken, h.held) << where << ": " << h.taken << " of " << h.held << " held pieces taken back";
     }
   }
 }
