@@ -26,6 +26,11 @@ TEST(BenchStroke, ProgressiveStrokesAgainstTheirOnePolygonCut) {
       ASSERT_EQ(stroke["progressive"].size(), 1u) << name;
       for (const auto& p : stroke["progressive"]) {
         EXPECT_GT(p["steps_cut"].get<int>(), 0) << name;
+        const double p50 = p["step_ms_p50"].get<double>(), p90 = p["step_ms_p90"].get<double>();
+        const double p99 = p["step_ms_p99"].get<double>(), most = p["step_ms_max"].get<double>();
+        const double mean = p["step_ms_mean"].get<double>();
+        EXPECT_TRUE(0 < p50 && p50 <= p90 && p90 <= p99 && p99 <= most) << name << " " << p.dump();
+        EXPECT_TRUE(0 < mean && mean <= most) << name << " " << p.dump();
         // The MT's storage: retracted cuts leave slots behind during the
         // stroke (more than the one-polygon cut's), reclaimed once it ends:
         // then at most as many dead tets as live ones, or kReclaimMin.
