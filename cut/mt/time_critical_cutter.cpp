@@ -2,6 +2,7 @@
 
 #include "cut/mt/cut_guard.h"
 #include "engine/input_error.h"
+#include "engine/tet_geometry.h"
 
 #include <algorithm>
 #include <array>
@@ -29,6 +30,40 @@ Vec3 outward(const CutPolygon& polygon, const Vec3& a, const Vec3& b) {
   for (const Vec3& x : polygon.corners())
     if (std::abs((x - a).dot(across)) > std::abs(farthest)) farthest = (x - a).dot(across);
   return farthest > 0 ? Vec3(-across) : across;
+}
+
+// How far x lies from `polygon` (approximately).
+double distance_to(const CutPolygon& polygon, const Vec3& x) {
+  return std::hypot(polygon.signed_distance(x), polygon.distance_outside(x));
+}
+
+// The Hausdorff distance between two convex polygons: the distance to a
+// convex set is convex, so its largest on a polygon is at a corner.
+double hausdorff(const CutPolygon& a, const CutPolygon& b) {
+  double d = 0;
+  for (const Vec3& x : a.corners()) d = std::max(d, distance_to(b, x));
+  for (const Vec3& x : b.corners()) d = std::max(d, distance_to(a, x));
+  return d;
+}
+
+// The mean edge length of the tets `changes` replaced that the root creates
+// (the finest), or of all of them when none is.
+double mean_finest_edge(const Mt& mt, const MtChangeReport& changes) {
+  double finest = 0, all = 0;
+  std::size_t n_finest = 0, n_all = 0;
+  for (const TetReplacement& r : changes.replaced) {
+    const engine::Tet& v = mt.tet(r.old);
+    double sum = 0;
+    for (const auto& e : engine::kTetEdges) sum += (mt.position(v[e[0]]) - mt.position(v[e[1]])).norm();
+    all += sum;
+    n_all += 6;
+    if (mt.birth(r.old) == mt.root()) {
+      finest += sum;
+      n_finest += 6;
+    }
+  }
+  if (n_finest > 0) return finest / static_cast<double>(n_finest);
+  return n_all > 0 ? all / static_cast<double>(n_all) : 0.0;
 }
 
 // How far past the line a-b, along each of `out`, the tets reach that hold
@@ -106,6 +141,11 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
   // when the frame's polygon has no area on its plane).
   std::optional<CutPolygon> grown;
   if (ended.empty() && current && part_) grown = on_part_plane(*part_, crossing_ ? past(*current, *crossing_) : *current);
+  // A part cut whole whose polygon has moved less than its cut allows
+  // (kRedoReach) keeps that cut this frame.
+  if (ended.empty() && current && !part_ && !(plane_fixed && !pivot_) && held_ && held_->whole_part &&
+      !active_ && queue_.empty() && hausdorff(whole_polygon(*current), *held_->whole_part) <= held_->redo_within)
+    return std::nullopt;
   std::optional<CutRetraction> out;
   if (grown && held_ && held_->front_of == part_->record && !active_ && queue_.empty())
     out = keep_front(mt, bvh, *grown);
@@ -165,21 +205,25 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     submit_part(*part_, std::move(before));
     return out;
   }
-  std::optional<CutPolygon> polygon;
-  if (pivot_) polygon = pivoted(*pivot_, current->corners());
-  if (!polygon && crossing_) polygon = past(*current, *crossing_);
-  if (!polygon) polygon = *current;
+  const CutPolygon polygon = whole_polygon(*current);
   // A part going on from the last one's crack across a gentle turn
   // continues it (stroke_crack.h), which only a cut of its whole polygon
-  // does: it is cut whole each frame, pivoting about the edge as the blade
-  // goes on, until it ends.
+  // does: it is cut whole, pivoting about the edge as the blade goes on,
+  // until it ends (again each frame its polygon moved by kRedoReach).
   if (plane_fixed && !pivot_) {
-    part_ = Part{std::make_shared<PartRecord>(*polygon), *polygon};
+    part_ = Part{std::make_shared<PartRecord>(polygon), polygon};
     submit_part(*part_);
   } else {
-    queue_provisional({.polygon = *polygon, .stroke = true});  // the plane may still turn
+    queue_provisional({.polygon = polygon, .stroke = true, .whole_part = true});  // the plane may still turn
   }
   return out;
+}
+
+CutPolygon TimeCriticalCutter::whole_polygon(const CutPolygon& current) const {
+  std::optional<CutPolygon> polygon;
+  if (pivot_) polygon = pivoted(*pivot_, current.corners());
+  if (!polygon && crossing_) polygon = past(current, *crossing_);
+  return polygon ? *polygon : current;
 }
 
 std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::pivot_between(const CutPolygon& previous,
@@ -203,7 +247,7 @@ std::optional<TimeCriticalCutter::Pivot> TimeCriticalCutter::turn_edge(const Cut
   // them are passed over.
   const std::vector<Vec3>& c = previous.corners();
   const std::size_t n = c.size();
-  const auto off = [&](const Vec3& x) { return std::hypot(next.signed_distance(x), next.distance_outside(x)); };
+  const auto off = [&](const Vec3& x) { return distance_to(next, x); };
   const double tolerance = 0.1 * previous.diameter();
   std::vector<double> cost(n);
   double longest = 0;
@@ -369,6 +413,7 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
     if (!continuation->junctions.empty() || continuation->leading_edge >= 0) def.continuation = &*continuation;
     if (!q.provisional) a.crack_polygon = q.polygon;
   }
+  if (q.whole_part) a.whole_part = q.polygon;
   a.cut = std::make_unique<MtCut>(mt, bvh, q.polygon, q.geometry, def, table_, &workspace_);
   if (a.record && a.select == CutSelect::kComplete) {
     frame_ = Frame{.record = a.record.get(), .previous = q.grown_from, .before = a.record->before_commit()};
@@ -522,6 +567,10 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
         (a.provisional && a.cut->tets_crossed_partially() > 0);
     if (a.provisional) {
       held_ = std::move(a.tx);
+      if (a.whole_part) {
+        held_->whole_part = std::move(a.whole_part);
+        held_->redo_within = kRedoReach * mean_finest_edge(mt, held_->changes);
+      }
       if (a.record && a.select == CutSelect::kFront) {
         held_->front_of = a.record;
         if (with_kept) {  // the whole front, held in the record until the next frame

@@ -125,9 +125,10 @@ class TimeCriticalCutter {
   // only the others are taken back, and split afresh by the frame's commit
   // or front; where the part has met an older crack, the kept splits and
   // the new ones together pay its commits' ledger (cut_guard.h). Until the
-  // plane is fixed the whole polygon is cut provisionally. A polygon of the part that is not on the record's plane
-  // (the World carries each frame's polygon to rest space anew) is
-  // projected onto it, joined with the part's last polygon.
+  // plane is fixed the whole polygon is cut provisionally (again each
+  // frame it moved by kRedoReach). A polygon of the part that is not on
+  // the record's plane (the World carries each frame's polygon to rest
+  // space anew) is projected onto it, joined with the part's last polygon.
   // Turns. Where the stroke turns gently (less than kMaxContinuedTurn), the
   // next part starts on the ended polygon's edge nearest it (the blade where
   // it turned) and pivots about it: its polygons hold that edge exactly and
@@ -153,6 +154,13 @@ class TimeCriticalCutter {
                                      std::span<const std::uint8_t> turned_back,
                                      const std::optional<CutPolygon>& current, bool plane_fixed);
   static constexpr double kMaxContinuedTurn = 45.0;  // degrees between two parts' planes
+  // A part cut whole each frame (its plane not fixed yet, or pivoting about
+  // a turn's edge) is cut again only once its polygon lies farther from the
+  // one cut than this share of the mean edge of the finest tets that cut
+  // split (a frame of a 1 kHz stylus moves the blade a few hundredths of a
+  // tet): till then the incision shown lags the blade by less than that.
+  // The part's end, and the first frame of its fixed plane, cut exactly.
+  static constexpr double kRedoReach = 0.25;
   // Of the reach of the tets at a sharp turn (above). Less leaves bridges of
   // tets that both cracks cut partially; more makes stubs that cut off a
   // piece against the object's side or the other stub: in random corner
@@ -245,6 +253,7 @@ class TimeCriticalCutter {
     // decomposes no fragment, so the tissue there stays joined).
     std::optional<CutPolygon> fallback{};
     bool is_fallback = false;  // this is that first fallback
+    bool whole_part = false;   // a part's polygon cut whole, provisionally (kRedoReach)
   };
   // Where a stroke's polygon goes on from the one before it across a gentle
   // turn: the earlier polygon's outline edge (a, b) that the next starts on,
@@ -278,6 +287,9 @@ class TimeCriticalCutter {
   // it grew from (none: the part's first frame); untouched when no frame
   // of the part is queued.
   void drop_queued_frame(const PartRecord& record, std::optional<CutPolygon>& grown_from);
+  // The polygon of the part in progress, `current`, when it is cut whole:
+  // pivoted about the last turn's edge, or starting behind a sharp turn's.
+  CutPolygon whole_polygon(const CutPolygon& current) const;
   // The pivot where `next` goes on from `previous` across a gentle turn, if it does.
   static std::optional<Pivot> pivot_between(const CutPolygon& previous, const CutPolygon& next);
   // The edge of `previous` where `next` goes on from it (the blade where
@@ -310,6 +322,11 @@ class TimeCriticalCutter {
     // ... holding splits kept from earlier frames: taken back tet by tet
     // (retract_replacements), with no mark and no fragment count.
     bool combined = false;
+    // A part cut whole (recut): its polygon, and how far the part's next
+    // polygons may lie from it before the cut is redone (kRedoReach of the
+    // tets it split).
+    std::optional<CutPolygon> whole_part{};
+    double redo_within = 0;
   };
   struct Active {
     std::unique_ptr<MtCut> cut;
@@ -318,6 +335,7 @@ class TimeCriticalCutter {
     CutSelect select = CutSelect::kAll;
     bool split_every_level = false;  // split a tet born of the root and replaced by the drain
     std::optional<CutPolygon> crack_polygon;  // a stroke's cut for good: recorded in its crack when kept
+    std::optional<CutPolygon> whole_part;     // a part cut whole, provisionally (Transaction::whole_part)
     Transaction tx;
     std::vector<std::size_t> order;   // jobs: visible first, then hidden, ascending within each
     std::size_t visible = 0;          // leading entries of `order` that are visible

@@ -150,6 +150,51 @@ TEST(StrokeCutter, TurningStrokesKeepTheMtValid) {
   }
 }
 
+// A part cut whole each frame (after a gentle turn it pivots about the
+// turn's edge; before its plane is fixed, it may turn) is cut again only
+// once its polygon has moved TimeCriticalCutter::kRedoReach of a tet: at a
+// stylus's rate (1,000 steps) most of those frames keep the last one's cut
+// and change nothing, the others take it back and cut the part again. The
+// MT is valid after every step, and the curved strokes through the object
+// still separate it.
+TEST(StrokeCutter, APartCutWholeIsCutAgainOnlyOnceItsPolygonMoves) {
+  const auto curved = [](double s) { return 0.3 * s * s; };
+  for (const std::string name : {"ellipsoid", "liver"}) {
+    const Mt& original = cut_test_mt(name);
+    const std::string where = name + " curved, 1000 steps";
+    const Path path = across(original, 0.4137, 1.1, curved);
+    Mt mt = original;
+    engine::TetBvh bvh(mt);
+    Frontier frontier = Frontier::coarsest(mt);
+    cut::StrokeSweep stroke;
+    cut::TimeCriticalCutter cutter;
+    constexpr int kSteps = 1000;
+    std::size_t kept = 0, redone = 0;
+    for (int k = 0; k <= kSteps + 1; ++k) {
+      cut::BladePose pose = path(std::min(1.0, static_cast<double>(k) / kSteps));
+      pose.engaged = k <= kSteps;
+      const bool whole_before = cutter.provisional_held() && !cutter.part_record();
+      const cut::StrokeStep step = cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, std::span(&pose, 1));
+      const bool whole_after = cutter.provisional_held() && !cutter.part_record();
+      if (whole_before && whole_after && step.recut) {
+        if (!step.retraction && step.run.changes.replaced.empty())
+          ++kept;
+        else if (step.retraction)
+          ++redone;
+      }
+      if (!step.recut) continue;
+      const engine::ValidationReport report = mt.validate();
+      ASSERT_TRUE(report.ok()) << where << " step " << k << ": " << report.summary();
+    }
+    EXPECT_FALSE(cutter.provisional_held()) << where;
+    EXPECT_GT(redone, 0u) << where;
+    EXPECT_GT(kept, redone) << where << ": " << kept << " frames kept the part's cut, " << redone << " redid it";
+    EXPECT_GE(cut::find_pieces(mt).count, 2u) << where;
+    std::printf("[ report   ] %s: a part cut whole kept in %zu frames, cut again in %zu\n", where.c_str(), kept,
+                redone);
+  }
+}
+
 // The same turning strokes with a budget that leaves a part's frame for
 // later calls (its commit in one, its front in the next frame's, or dropped
 // there as the part grows): every step leaves the MT valid, and the tissue
