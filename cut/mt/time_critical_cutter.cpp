@@ -150,6 +150,14 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
   if (grown && held_ && held_->front_of == part_->record && !active_ && queue_.empty())
     out = keep_front(mt, bvh, *grown);
   if (!out) out = retract(mt, bvh);
+  // A part that ends searches its front, the tets its last front and kept
+  // splits left (whole again now), and where its polygon grew.
+  if (part_ && (!ended.empty() || !current) && out && part_->record->front()) {
+    engine::Aabb front = *part_->record->front();
+    for (TetId t : out->revived)
+      for (VertId v : mt.tet(t)) front.extend(mt.position(v));
+    part_->record->set_front(front);
+  }
   for (std::size_t i = 0; i < ended.size(); ++i) {
     // The polygon cut for good: the part's (the first ended one, if a part
     // is in progress), or the ended one going on from the last.
@@ -330,7 +338,14 @@ std::optional<CutPolygon> TimeCriticalCutter::on_part_plane(const Part& part, co
 void TimeCriticalCutter::submit_ended(const CutPolygon& polygon, std::shared_ptr<PartRecord> record,
                                       const std::optional<Pivot>& next, std::optional<CutPolygon> fallback) {
   if (provisional_pending()) throw std::logic_error("TimeCriticalCutter: a provisional cut is held; retract it first");
-  Queued q{.polygon = polygon, .record = std::move(record), .stroke = true, .fallback = std::move(fallback)};
+  // A part's end searches, as its frames' commits do, its front and where
+  // its polygon grew since the last frame: its commits own the rest.
+  std::optional<CutPolygon> grown_from = record ? fallback : std::nullopt;
+  Queued q{.polygon = polygon,
+           .record = std::move(record),
+           .grown_from = std::move(grown_from),
+           .stroke = true,
+           .fallback = std::move(fallback)};
   if (next) q.leading = std::array<Vec3, 2>{next->a, next->b};
   queue_.push_back(std::move(q));
 }
@@ -385,12 +400,12 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
   def.record = a.record.get();
   def.select = a.select;
   def.decompose = !q.provisional;
-  // A part's frame searches around its front and where its polygon grew
-  // (part_record.h): the tets behind are committed.
+  // A part's frame, and its end, search around its front and where its
+  // polygon grew (part_record.h): the tets behind are committed.
   std::optional<engine::Aabb> search;
   if (a.record && a.record->front()) {
     if (a.select == CutSelect::kFront) search = a.record->front();
-    if (a.select == CutSelect::kComplete && q.grown_from) {
+    if (a.select != CutSelect::kFront && q.grown_from) {
       search = a.record->front();
       def.grown_from = &*q.grown_from;
     }

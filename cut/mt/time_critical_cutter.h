@@ -237,7 +237,7 @@ class TimeCriticalCutter {
     bool provisional = false;
     std::shared_ptr<PartRecord> record{};  // a part's cut (part_record.h), with `select`
     CutSelect select = CutSelect::kAll;
-    // A part's commit: its polygon of the last frame, which the commit
+    // A part's commit or end: its polygon of the last frame, which the cut
     // searches only outside of, beside the front (nullopt: search it all).
     std::optional<CutPolygon> grown_from{};
     // A polygon of the stroke in progress: cut as a continuation of the

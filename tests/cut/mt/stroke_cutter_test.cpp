@@ -117,6 +117,40 @@ TEST(StrokeCutter, StraightStrokesEndAsTheOneCutOfTheirPolygon) {
   }
 }
 
+// A part's end searches its front and where its polygon grew since its
+// last frame, as each frame's commit does (its commits own the rest): a
+// straight stroke whose last frame brings half of it at once, then
+// lifts the blade, still ends as the one cut of its polygon, tet for tet.
+TEST(StrokeCutter, APartsEndCutsWhatItsLastFrameAdds) {
+  for (const std::string name : {"ellipsoid", "liver", "box"}) {
+    const Mt& original = cut_test_mt(name);
+    for (const double depth : {0.6, 1.1}) {
+      const std::string where = name + " depth " + std::to_string(depth);
+      const Path path = across(original, 0.5137, depth);
+      constexpr int kSteps = 60, kLast = 30;  // the last frame's poses
+      Mt mt = original;
+      engine::TetBvh bvh(mt);
+      Frontier frontier = Frontier::coarsest(mt);
+      cut::StrokeSweep stroke;
+      cut::TimeCriticalCutter cutter;
+      for (int k = 0; k <= kSteps - kLast; ++k) {
+        const cut::BladePose pose = path(static_cast<double>(k) / kSteps);
+        cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, std::span(&pose, 1));
+      }
+      ASSERT_NE(cutter.part_record(), nullptr) << where << ": the part never fixed its plane";
+      std::vector<cut::BladePose> last;
+      for (int k = kSteps - kLast + 1; k <= kSteps; ++k) last.push_back(path(static_cast<double>(k) / kSteps));
+      last.push_back(last.back());
+      last.back().engaged = false;
+      cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, last);
+      const engine::ValidationReport report = mt.validate();
+      ASSERT_TRUE(report.ok()) << where << ": " << report.summary();
+      EXPECT_FALSE(cutter.provisional_held()) << where;
+      EXPECT_TRUE(canonical_mt(mt) == canonical_mt(cut_at_once(original, path, kSteps))) << where;
+    }
+  }
+}
+
 // Curved, wavy and L-shaped strokes, through and with the tip inside: every
 // step leaves the MT valid, in the end no finest tet is properly crossed by
 // what the blade swept, and a stroke through the whole depth separates the
