@@ -36,7 +36,8 @@
 // every resolution: the tets one fragment creates hold none or two of the
 // surface's faces through the edge, summed (more, and every frontier that
 // shows the fragment, as a mixed-resolution one can, is pinched there).
-// The edge check costs a point query per edge end, only near old cracks;
+// The edge check costs an index query per group of neighbouring edge
+// ends that earlier cuts made, only near old cracks;
 // the fragment check the tets the cut changed, and a pass over the tets of
 // the fragments checked whole.
 
@@ -78,9 +79,11 @@ const FragmentLedger* ledger_checked(const PartRecord* part);
 // `commit`). `kept`: a front's splits kept from earlier frames (the
 // part's, held in its record), checked when they were made; they join the
 // cut where the fragments' balance is checked, which sums the whole front.
-// Their edges are not checked again: a tet around one that changed since
-// is a piece of this cut or of `commit` with that edge. Empty when the cut
-// may be kept.
+// Their edges are not checked again on their own: a tet around one that
+// changed since is a piece of this cut or of `commit` with that edge, and
+// such a piece checks an edge it shares with a kept piece of an earlier
+// cut's piece as that piece's own check did. Empty when the cut may be
+// kept.
 engine::ValidationReport check_cut(const engine::Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
                                    std::size_t first_cut_vertex, std::size_t first_new_vertex,
                                    const PartRecord* part, CutSelect select, const FrameCommit* commit = nullptr,

@@ -57,7 +57,7 @@ double mean_finest_edge(const Mt& mt, const MtChangeReport& changes) {
     for (const auto& e : engine::kTetEdges) sum += (mt.position(v[e[0]]) - mt.position(v[e[1]])).norm();
     all += sum;
     n_all += 6;
-    if (mt.birth(r.old) == mt.root()) {
+    if (r.birth == mt.root()) {  // r.old is dead: its fragments are the replacement's
       finest += sum;
       n_finest += 6;
     }
@@ -200,7 +200,13 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     submit_ended(*polygon, std::move(record), pivot_, std::move(fallback));
   }
   if (!current) {
-    if (part_) submit_ended(part_->last, part_->record, std::nullopt, part_->last);  // the stroke ended with nothing more to cut
+    if (part_) {  // the stroke ended with nothing more to cut
+      // As above: a frame of the part left queued never runs, and the end
+      // grows from the polygon of the last frame that ran.
+      std::optional<CutPolygon> fallback = part_->last;
+      drop_queued_frame(*part_->record, fallback);
+      submit_ended(part_->last, part_->record, std::nullopt, std::move(fallback));
+    }
     part_.reset();
     frame_.reset();
     pivot_.reset();
