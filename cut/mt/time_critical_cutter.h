@@ -287,6 +287,13 @@ class TimeCriticalCutter {
   // it grew from (none: the part's first frame); untouched when no frame
   // of the part is queued.
   void drop_queued_frame(const PartRecord& record, std::optional<CutPolygon>& grown_from);
+  // Where the stroke turns sharply from `polygon` to `next`: crossing_ set
+  // for the next part, and `polygon` taken past the turn's edge (nullopt:
+  // no edge of it lies where `next` starts).
+  std::optional<CutPolygon> cross_at_turn(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon,
+                                          const CutPolygon& next);
+  // The Hausdorff distance between two convex polygons.
+  static double hausdorff(const CutPolygon& a, const CutPolygon& b);
   // The polygon of the part in progress, `current`, when it is cut whole:
   // pivoted about the last turn's edge, or starting behind a sharp turn's.
   CutPolygon whole_polygon(const CutPolygon& current) const;
