@@ -364,9 +364,19 @@ engine::ValidationReport World::validate() const {
   engine::ValidationReport report = mt_.validate();
   for (auto& p : engine::validate_frontier(mt_, frontier_).problems) report.add("frontier: " + p);
   for (auto& p : model_.validate().problems) report.add("springs: " + p);
-  if (state_.x.size() != model_.num_particles()) report.add("state and spring model differ in size");
+  if (state_.x.size() != model_.num_particles() || state_.v.size() != state_.x.size())
+    report.add("state and spring model differ in size");
+  const auto finite = [](const std::vector<Vec3>& values) {
+    return std::all_of(values.begin(), values.end(), [](const Vec3& p) { return p.allFinite(); });
+  };
+  if (!finite(state_.x)) report.add("state: a position is not finite");
+  if (!finite(state_.v)) report.add("state: a velocity is not finite");
   for (auto& p : bvh_.validate(mt_).problems) report.add("bvh: " + p);
   for (auto& p : cutter_.validate(mt_).problems) report.add(p);
+  // A move decided at an earlier frame reaches a frontier of the MT as it is
+  // now (a cut takes any pending move first).
+  if (lod_move_)
+    for (auto& p : engine::validate_frontier(mt_, lod_move_->frontier).problems) report.add("pending LOD move: " + p);
   return report;
 }
 

@@ -130,8 +130,9 @@ class World {
   // and the MT's size: equal across runs iff the runs are bit-identical.
   std::uint64_t state_hash() const;
 
-  // MT, frontier, BVH, cutter (a held provisional cut can be taken back)
-  // and spring model all valid (tests call it after steps).
+  // MT, frontier, BVH, cutter (a held provisional cut can be taken back),
+  // spring model, a finite state of its size and the frontier of a pending
+  // LOD move all valid (tests call it after steps).
   engine::ValidationReport validate() const;
 
  private:

@@ -124,6 +124,8 @@ engine::ValidationReport validate_pieces(const Mt& mt, const MtPieces& pieces) {
     if (!special && (p < 0 || static_cast<std::size_t>(p) >= pieces.count))
       report.add("pieces: fragment " + std::to_string(f) + " is in no piece");
   }
+  // Apart: no vertex is used by tets of two pieces, at any resolution.
+  std::vector<std::int32_t> vertex_piece(mt.num_vertices(), -1);
   for (std::size_t i = 0; i < mt.num_tets(); ++i) {
     const TetId t(i);
     if (!mt.alive(t)) continue;
@@ -133,6 +135,13 @@ engine::ValidationReport validate_pieces(const Mt& mt, const MtPieces& pieces) {
       if (f != mt.root() && f != mt.drain() && pieces.fragment_piece[f.index()] != p)
         report.add("pieces: tet " + std::to_string(i) + " joins pieces " + std::to_string(p) + " and " +
                    std::to_string(pieces.fragment_piece[f.index()]));
+    for (VertId v : mt.tet(t)) {
+      std::int32_t& owner = vertex_piece[v.index()];
+      if (owner < 0) owner = p;
+      if (owner != p)
+        report.add("pieces: vertex " + std::to_string(v.value) + " is in pieces " + std::to_string(owner) + " and " +
+                   std::to_string(p));
+    }
   }
   return report;
 }

@@ -51,7 +51,8 @@ std::size_t count_pieces(const Mt& mt);
 // of it, and the outputs need only the labels.
 std::vector<double> piece_volumes(const Mt& mt, const MtPieces& pieces);
 
-// Every arc (live tet) within one piece, root and drain apart; counts agree.
+// Every arc (live tet) within one piece, root and drain apart, and the
+// pieces apart: no vertex in two of them; counts agree.
 engine::ValidationReport validate_pieces(const Mt& mt, const MtPieces& pieces);
 
 // Piece `piece` as its own MT: its vertices renumbered (vertex_ids, optional,

@@ -10,6 +10,7 @@
 #include "cut/mt/time_critical_cutter.h"
 #include "cut/stroke_sweep.h"
 #include "tests/cut/mt/mt_cut_test_util.h"
+#include "tests/test_size.h"
 
 namespace mtcut::test {
 namespace {
@@ -102,8 +103,8 @@ void run_sequence(const std::string& name, int cuts, std::uint64_t seed) {
   ::testing::Test::RecordProperty("whole_fragments", static_cast<int>(whole));
 }
 
-TEST(MtCut, RandomSequenceEllipsoid) { run_sequence("ellipsoid", 24, 11); }
-TEST(MtCut, RandomSequenceLiver) { run_sequence("liver", 24, 12); }
+TEST(MtCut, RandomSequenceEllipsoid) { run_sequence("ellipsoid", test::scaled(24), 11); }
+TEST(MtCut, RandomSequenceLiver) { run_sequence("liver", test::scaled(24), 12); }
 TEST(MtCut, RandomSequencePaperPreset) { run_sequence("paper", 6, 13); }
 
 TEST(MtCut, OrderOfFragmentsDoesNotMatter) {
@@ -205,6 +206,31 @@ TEST(MtCut, CandidatesOfTheSamePolygonFindWhatTheWalkFinds) {
     }
     EXPECT_GT(compared, 0u) << name << ": no polygon found a tet";
   }
+}
+
+// Two tets that share a face are one piece: labels that put them in two
+// (each tet's fragments agree with its label: here the root and the drain
+// only) are refused for the vertices the pieces share.
+TEST(MtPieces, PiecesThatShareAVertexAreRefused) {
+  engine::TetMesh mesh;
+  mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 1, 1)};
+  mesh.tets = {engine::Tet{VertId(0), VertId(1), VertId(2), VertId(3)},
+               engine::Tet{VertId(1), VertId(4), VertId(2), VertId(3)}};
+  Mt mt = Mt::from_fine_mesh(mesh);
+  const FragId drain = mt.add_fragment();
+  mt.set_drain(drain);
+  for (int t = 0; t < 2; ++t) mt.set_death(engine::TetId(t), drain);
+  ASSERT_TRUE(mt.validate().ok()) << mt.validate().summary();
+  cut::MtPieces pieces = cut::find_pieces(mt);
+  ASSERT_EQ(pieces.count, 1u);
+  EXPECT_TRUE(cut::validate_pieces(mt, pieces).ok());
+  pieces.count = 2;
+  pieces.tet_piece = {0, 1};
+  pieces.finest_tets = {1, 1};
+  pieces.fragments = {{}, {}};
+  const engine::ValidationReport report = cut::validate_pieces(mt, pieces);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.summary().find("is in pieces 0 and 1"), std::string::npos) << report.summary();
 }
 
 TEST(MtCut, SeparatingCutGivesTwoValidPieces) {

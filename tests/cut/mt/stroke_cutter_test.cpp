@@ -15,6 +15,7 @@
 
 #include "cut/mt/mt_pieces.h"
 #include "tests/cut/mt/stroke_test_util.h"
+#include "tests/test_size.h"
 
 namespace mtcut::test {
 namespace {
@@ -271,11 +272,12 @@ const Mt& property_mt(const std::string& spec) {
   return cache.emplace(spec, engine::build_mt(mesh, engine::MtBuildOptions{})).first->second;
 }
 
-// How many random strokes: MTCUT_STROKES (default 200); MTCUT_STROKE_FIRST
-// skips to a given one (to replay a failure).
+// How many random strokes: MTCUT_STROKES, else 200 at the build's test size
+// (test_size.h); MTCUT_STROKE_FIRST skips to a given one (to replay a
+// failure).
 int stroke_count() {
   const char* env = std::getenv("MTCUT_STROKES");
-  return env ? std::max(1, std::atoi(env)) : 200;
+  return env ? std::max(1, std::atoi(env)) : test::scaled(200);
 }
 
 // Random strokes: 1 to 3 straight legs in random directions across the

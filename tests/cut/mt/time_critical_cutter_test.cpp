@@ -102,11 +102,17 @@ TEST(TimeCriticalCutter, TinyBudgetGivesTheSameMtAsUnlimited) {
   EXPECT_TRUE(canonical_mt(spread) == canonical_mt(unlimited));
 }
 
-TEST(TimeCriticalCutter, MillisecondBudgetAndProgress) {
+// A budget of milliseconds already spent (none) does one job a call (every
+// call does at least one), as a budget of one work unit does: the same
+// calls and the same MT, on any machine at any speed.
+TEST(TimeCriticalCutter, ASpentMillisecondBudgetDoesOneJobACall) {
   const auto polygons = three_cuts();
-  std::size_t calls = 0;
-  const Mt mt = run_cutter(polygons, CutBudget::ms(0.01), true, &calls);
-  EXPECT_GE(calls, 3u);
+  std::size_t calls_ms = 0, calls_units = 0;
+  const Mt by_ms = run_cutter(polygons, CutBudget::ms(0.0), true, &calls_ms);
+  const Mt by_units = run_cutter(polygons, CutBudget::units(1), true, &calls_units);
+  EXPECT_GT(calls_ms, 3u);
+  EXPECT_EQ(calls_ms, calls_units);
+  EXPECT_TRUE(canonical_mt(by_ms) == canonical_mt(by_units));
 }
 
 TEST(TimeCriticalCutter, AProvisionalCutCountsPiecesOnlyWithoutAFront) {
