@@ -11,10 +11,12 @@
 
 namespace mtcut::test {
 
+// A value that is no positive number (unset, empty, 0, text) leaves the
+// build's size.
 inline double test_size() {
   const char* env = std::getenv("MTCUT_TEST_SIZE");
-  const double size = env ? std::atof(env) : MTCUT_TEST_SIZE_DEFAULT;
-  return size > 0 ? size : 1.0;
+  const double size = env ? std::atof(env) : 0.0;
+  return size > 0 ? size : MTCUT_TEST_SIZE_DEFAULT;
 }
 
 // n at the test's size, at least 1.

@@ -1,6 +1,6 @@
 #include "app/hid/hid_feed.h"
 
-#include <thread>
+#include <cmath>
 
 namespace mtcut::app::hid {
 
@@ -22,17 +22,12 @@ void HidFeed::take(const std::vector<Sample>& samples) {
   samples_ += static_cast<long>(samples.size());
 }
 
-double HidFeed::clock() const {
-  if (!input_) return 0.0;
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - input_->epoch()).count();
-}
+double HidFeed::clock() const { return input_ ? 1e-6 * static_cast<double>(input_->now_us()) : 0.0; }
 
 std::vector<sim::ScalpelKeyframe> HidFeed::frame_samples(double t) {
   if (input_) {
-    const auto due = input_->epoch() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                           std::chrono::duration<double>(t + lookahead_));
-    std::this_thread::sleep_until(due);
-    take(input_->take_until(std::chrono::steady_clock::now()));
+    input_->wait_until_us(static_cast<std::int64_t>(std::ceil((t + lookahead_) * 1e6)));
+    take(input_->take_until_us(input_->now_us()));
   }
   std::vector<sim::ScalpelKeyframe> samples = path_.samples_between(last_frame_, t);
   last_frame_ = t;

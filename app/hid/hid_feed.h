@@ -48,7 +48,7 @@ class HidFeed {
   // The frame at `t` has been stepped, finishing at `finished` s on the
   // input's clock: samples up to t have reached the World (latency).
   void reached(double t, double finished);
-  // Seconds since the input's epoch on the steady clock (live; 0 for a replay).
+  // Seconds on the input's clock since it started (live; 0 for a replay).
   double clock() const;
 
   bool live() const { return input_ != nullptr; }

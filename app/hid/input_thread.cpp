@@ -82,7 +82,13 @@ bool InputThread::wait_until(const std::function<bool(const InputStatus&)>& done
 }
 
 std::int64_t InputThread::now_us() const {
+  if (def_.clock.now_us) return def_.clock.now_us();
   return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - epoch_).count();
+}
+
+void InputThread::wait_until_us(std::int64_t us) const {
+  if (def_.clock.wait_until_us) return def_.clock.wait_until_us(us);
+  std::this_thread::sleep_until(epoch_ + std::chrono::microseconds(us));
 }
 
 void InputThread::emit(InputEvent::Kind kind, const std::string& message) {

@@ -1,7 +1,8 @@
 #pragma once
 // The HID input thread: opens the profile's device, reads its reports with a
 // timeout, timestamps each one on the steady clock, decodes it and queues the
-// pose for the frame loop (optionally recording the raw reports). Faults
+// pose for the frame loop (optionally recording the raw reports; the clock
+// can be the caller's, InputClock). Faults
 // never reach the caller as exceptions: an unplug is reported once as an
 // event, the blade is disengaged (a sample with engaged = false), and the
 // device is looked for again every retry interval until it is back.
@@ -14,6 +15,7 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -29,12 +31,23 @@
 
 namespace mtcut::app::hid {
 
+// The input's time, in microseconds since start(): what each report and
+// event is stamped with, and what a live feed waits on for its frame's
+// samples (HidFeed). Unset: the steady clock, and a wait is a sleep. A test
+// moves a clock of its own, so that which frame a sample reaches does not
+// depend on how fast the machine runs.
+struct InputClock {
+  std::function<std::int64_t()> now_us;
+  std::function<void(std::int64_t)> wait_until_us;  // returns once now_us() has reached its argument
+};
+
 struct InputDef {
   std::string device_path;     // this node; empty: the first device the profile matches, looked up on every (re)connection
   int read_timeout_ms = 50;    // longest block in one read (bounds how long stop() waits)
   double retry_seconds = 1.0;  // between attempts to find or reopen the device
   std::string record_path;     // raw reports recorded here (.hidrec); empty: none
   std::size_t queue_capacity = 65536;
+  InputClock clock;            // both functions or neither
 };
 
 // Something to tell the user, once per occurrence (console or viewer panel).
@@ -76,6 +89,11 @@ class InputThread {
   const Profile& profile() const { return decoder_.profile(); }
   // All samples up to `t` not taken yet, oldest first: the frame loop's call.
   std::vector<Sample> take_until(std::chrono::steady_clock::time_point t);
+  // The same up to `us` on the input's clock.
+  std::vector<Sample> take_until_us(std::int64_t us) { return queue_.take_until(us); }
+  // The input's time (InputClock), and a wait until it reaches `us`.
+  std::int64_t now_us() const;
+  void wait_until_us(std::int64_t us) const;
   std::vector<Sample> take_all() { return queue_.take_all(); }
   std::vector<InputEvent> take_events();
   InputStatus status() const;
@@ -89,7 +107,6 @@ class InputThread {
   void unplug();
   void emit(InputEvent::Kind kind, const std::string& message);
   void record(const RawEvent& event);
-  std::int64_t now_us() const;
   // Waits `seconds` unless stop() comes first; returns false when stopping.
   bool pause(double seconds);
 

@@ -114,23 +114,37 @@ std::vector<double> piece_volumes(const Mt& mt, const MtPieces& pieces) {
 
 engine::ValidationReport validate_pieces(const Mt& mt, const MtPieces& pieces) {
   engine::ValidationReport report;
-  if (pieces.fragment_piece.size() != mt.num_fragments() || pieces.tet_piece.size() != mt.num_tets()) {
-    report.add("pieces: sized for another MT");
+  if (pieces.fragment_piece.size() != mt.num_fragments() || pieces.tet_piece.size() != mt.num_tets() ||
+      pieces.fragments.size() != pieces.count || pieces.finest_tets.size() != pieces.count) {
+    report.add("pieces: sized for another MT or another count");
     return report;
   }
+  const auto in_range = [&](std::int32_t p) { return p >= 0 && static_cast<std::size_t>(p) < pieces.count; };
+  std::vector<std::vector<FragId>> fragments(pieces.count);
   for (std::size_t f = 0; f < mt.num_fragments(); ++f) {
     const bool special = FragId(f) == mt.root() || FragId(f) == mt.drain();
     const std::int32_t p = pieces.fragment_piece[f];
-    if (!special && (p < 0 || static_cast<std::size_t>(p) >= pieces.count))
+    if (special) continue;
+    if (!in_range(p))
       report.add("pieces: fragment " + std::to_string(f) + " is in no piece");
+    else
+      fragments[static_cast<std::size_t>(p)].emplace_back(f);
   }
-  // Apart: no vertex is used by tets of two pieces, at any resolution.
+  if (fragments != pieces.fragments) report.add("pieces: the pieces' fragment lists are not their fragments'");
+  // Apart: no vertex is used by tets of two pieces, at any resolution (the
+  // first such vertex is reported).
   std::vector<std::int32_t> vertex_piece(mt.num_vertices(), -1);
+  std::vector<std::size_t> finest(pieces.count, 0);
+  bool shared = false;
   for (std::size_t i = 0; i < mt.num_tets(); ++i) {
     const TetId t(i);
     if (!mt.alive(t)) continue;
     const std::int32_t p = pieces.tet_piece[i];
-    if (p < 0) report.add("pieces: tet " + std::to_string(i) + " is in no piece");
+    if (!in_range(p)) {
+      report.add("pieces: tet " + std::to_string(i) + " is in no piece");
+      continue;
+    }
+    if (mt.birth(t) == mt.root()) ++finest[static_cast<std::size_t>(p)];
     for (FragId f : {mt.birth(t), mt.death(t)})
       if (f != mt.root() && f != mt.drain() && pieces.fragment_piece[f.index()] != p)
         report.add("pieces: tet " + std::to_string(i) + " joins pieces " + std::to_string(p) + " and " +
@@ -138,11 +152,14 @@ engine::ValidationReport validate_pieces(const Mt& mt, const MtPieces& pieces) {
     for (VertId v : mt.tet(t)) {
       std::int32_t& owner = vertex_piece[v.index()];
       if (owner < 0) owner = p;
-      if (owner != p)
+      if (owner != p && !shared) {
         report.add("pieces: vertex " + std::to_string(v.value) + " is in pieces " + std::to_string(owner) + " and " +
                    std::to_string(p));
+        shared = true;
+      }
     }
   }
+  if (finest != pieces.finest_tets) report.add("pieces: the finest tets counted per piece differ");
   return report;
 }
 

@@ -52,7 +52,8 @@ std::size_t count_pieces(const Mt& mt);
 std::vector<double> piece_volumes(const Mt& mt, const MtPieces& pieces);
 
 // Every arc (live tet) within one piece, root and drain apart, and the
-// pieces apart: no vertex in two of them; counts agree.
+// pieces apart: no vertex in two of them; each piece's fragment list and
+// finest-tet count are its own.
 engine::ValidationReport validate_pieces(const Mt& mt, const MtPieces& pieces);
 
 // Piece `piece` as its own MT: its vertices renumbered (vertex_ids, optional,

@@ -131,7 +131,7 @@ TEST_F(RunCommand, TheStressAndLiverScenariosRunValid) {
     EXPECT_TRUE(out["valid"].get<bool>()) << name;
     EXPECT_EQ(out["nan_events"].get<int>(), 0) << name;
     EXPECT_EQ(out["cuts_refused"].get<int>(), 0) << name;
-    EXPECT_GT(out["first_cut_frame"].get<int>(), 0) << name;
+    EXPECT_FALSE(out["first_cut_frame"].is_null()) << name << ": nothing was cut";
     if (name == "stress") {
       EXPECT_EQ(out["pieces"].get<int>(), 2);
     }

@@ -3,8 +3,10 @@
 // read returns an error), then back. The unplug is told once, the blade
 // disengages at once (so the World cuts the stroke's part so far),
 // reconnection is retried until it succeeds, and the World runs on: no
-// reset, no frame lost, the cut kept, the stroke resumed. Waits are the
-// feed's own real-time pacing; nothing is timed.
+// reset, no frame lost, the cut kept, the stroke resumed. The input runs on
+// the test's clock (InputClock): each frame's report is stamped half a frame
+// after the frame's time and reaches the World in the next frame, however
+// fast the machine runs; nothing is timed.
 // Also, replayed: each frame gets every sample since the last frame, then
 // the pose at its time.
 
@@ -12,7 +14,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 #include <unistd.h>
@@ -90,6 +95,14 @@ TEST(HidFeed, AnUnplugMidStrokeIsToldOnceDisengagesAndTheWorldRunsOn) {
   const std::size_t loaded_vertices = world.mt().num_vertices();
   const double dt = scenario.world.dt;
 
+  // The test's clock: the feed's wait for a frame's samples moves it to the
+  // frame's due time; the test moves it to where each report is stamped.
+  std::atomic<std::int64_t> clock_us{0};
+  const auto advance_to = [&](std::int64_t us) {
+    std::int64_t now = clock_us.load();
+    while (now < us && !clock_us.compare_exchange_weak(now, us)) {
+    }
+  };
   test::FakeTransport transport(kPen);
   const std::string recording = (std::filesystem::temp_directory_path() /
                                  ("mtcut-hid-feed-" + std::to_string(::getpid()) + ".hidrec")).string();
@@ -97,25 +110,37 @@ TEST(HidFeed, AnUnplugMidStrokeIsToldOnceDisengagesAndTheWorldRunsOn) {
   def.record_path = recording;
   def.read_timeout_ms = 5;
   def.retry_seconds = 0.002;
+  def.clock = {[&] { return clock_us.load(); }, advance_to};
   InputThread input(transport, load_profile("pen_tablet"), def);
   input.start();
   HidFeed feed(input, dt);
 
-  // The pen reports until kFrames; the frames after it let a report that
-  // arrived after its frame's time (a frame that ran late on a loaded
-  // machine) reach the World in the next one.
+  // The pen reports until kFrames; the frames after it take the last
+  // reports (each reaches the World in the frame after the one it is
+  // stamped in).
   constexpr int kUnplugFrame = 20, kBackFrame = 30, kFrames = 60, kDrainFrames = 3;
   std::vector<sim::ScalpelPose> poses;             // the frames' poses
   std::vector<sim::ScalpelKeyframe> handed;        // every sample the World got
   std::vector<InputEvent> events;
   std::size_t cuts_started = 0, cut_vertices_at_reconnect = 0;
+  long queued = 0;  // samples the input thread is to have queued: every report, and the unplug's
+  // Until the input thread has taken what the test queued (a bound on a
+  // thread that never does, not a timing).
+  const auto settle = [&](auto&& done) {
+    ASSERT_TRUE(input.wait_until(done, std::chrono::seconds(60))) << "the input thread did not take the reads";
+  };
   for (int f = 0; f < kFrames + kDrainFrames; ++f) {
+    const double t = world.time();
+    advance_to(static_cast<std::int64_t>(std::llround((t + 0.5 * dt) * 1e6)));
     // The pen crosses the front end at x = 4 cm: y from -6 cm to 0, then
     // (after the unplug) on to +6 cm.
+    if (f == kBackFrame) settle([](const InputStatus& s) { return s.connects == 2; });  // back before it reports
     if (f < kUnplugFrame) transport.queue_bytes(pen_at(0.04, -0.06 + 0.06 * f / kUnplugFrame));
     if (f == kUnplugFrame) transport.queue_unplug(3);  // gone for three lookups
     if (f >= kBackFrame && f < kFrames) transport.queue_bytes(pen_at(0.04, 0.06 * (f - kBackFrame) / (kFrames - kBackFrame)));
-    const double t = world.time();
+    queued += f < kUnplugFrame || f == kUnplugFrame || (f >= kBackFrame && f < kFrames);
+    settle([&](const InputStatus& s) { return s.samples == queued; });
+    if (::testing::Test::HasFatalFailure()) return;
     const std::vector<sim::ScalpelKeyframe> frame = feed.frame_samples(t);
     handed.insert(handed.end(), frame.begin(), frame.end());
     poses.push_back(frame.back().pose);

@@ -318,8 +318,10 @@ TEST_P(StrokeCutterRandom, StrokesKeepTheMtValid) {
     const Vec3 size = box.hi - box.lo;
     const int legs = 1 + static_cast<int>(u(rng) * 3);
     const double depth = 0.3 + 0.9 * u(rng);
-    // One stroke in 100 has 1,000 steps, in every shard in turn.
-    const int steps = i % 100 == 100 - kShards + (i / 100) % kShards ? 1000 : 20 + static_cast<int>(u(rng) * 60);
+    // One stroke in 100 has 1,000 steps, in every shard in turn; with fewer
+    // than 100 strokes (a smaller test size), the last one.
+    const bool long_stroke = i % 100 == 100 - kShards + (i / 100) % kShards || (strokes < 100 && i == strokes - 1);
+    const int steps = long_stroke ? 1000 : 20 + static_cast<int>(u(rng) * 60);
     // The blade's foot path: a polyline from outside the box across it.
     std::vector<Vec3> corners;
     const double a0 = 2 * M_PI * u(rng);
