@@ -1,8 +1,8 @@
 #pragma once
 // The HID input thread: opens the profile's device, reads its reports with a
-// timeout, timestamps each one on the steady clock, decodes it and queues the
-// pose for the frame loop (optionally recording the raw reports; the clock
-// can be the caller's, InputClock). Faults
+// timeout, timestamps each one on its clock (the steady clock, or the
+// caller's: InputClock), decodes it and queues the pose for the frame loop
+// (optionally recording the raw reports). Faults
 // never reach the caller as exceptions: an unplug is reported once as an
 // event, the blade is disengaged (a sample with engaged = false), and the
 // device is looked for again every retry interval until it is back.
@@ -83,7 +83,8 @@ class InputThread {
   void start();
   void stop();
 
-  // Sample times count from here (steady clock at start()).
+  // The steady clock at start(): sample times count from here unless
+  // InputDef::clock is given.
   std::chrono::steady_clock::time_point epoch() const { return epoch_; }
   // The profile the reports are decoded with.
   const Profile& profile() const { return decoder_.profile(); }

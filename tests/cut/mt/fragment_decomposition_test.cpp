@@ -84,7 +84,7 @@ TEST(FragmentDecomposition, RegionsThatShareNoVertexBecomeTwoParts) {
   EXPECT_NE(h.mt.tet(h.mt.created(d.parts[0])[0]), h.mt.tet(h.mt.created(d.parts[1])[0]));
   const auto report = h.mt.validate();
   EXPECT_TRUE(report.ok()) << report.summary();
-  // The scratch is handed back clear: a second decomposition of a part is connected.
+  // The same scratch serves again: a part (one corner) decomposes as connected.
   EXPECT_EQ(decompose_fragment(h.mt, d.parts[1], scratch).outcome, DecomposeOutcome::kConnected);
 }
 
