@@ -58,8 +58,6 @@ struct BenchMesh {
 
 BenchMesh load_bench_mesh(const std::string& name, const std::string& spec, const engine::MeshLoadDef& load) {
   BenchMesh out{name, spec, engine::load_mesh(spec, load).mesh, {}};
-  if (const auto report = out.mesh.validate(); !report.ok())
-    throw engine::InputError(spec + ": invalid tet mesh: " + report.problems.front());
   for (const CutShape& shape : kCuts) out.cuts.push_back(make_cut(out.mesh, shape));
   return out;
 }

@@ -19,7 +19,7 @@ struct CutOptions {
   std::string scheme = "lut";
   std::string output;
   engine::MeshLoadDef load;
-  std::vector<double> size;
+  MeshInputOptions mesh_input;
   cut::CutterDef cutter;
   bool json = false;
 };
@@ -30,10 +30,9 @@ void run_cut(CutOptions& options) {
   options.cutter.scheme = *scheme;
   // The polygon first: a typo in it should not wait for the meshing.
   const cut::CutPolygon polygon = cut::parse_cut_polygon(options.polygon, "--polygon");
-  apply_builtin_size(options.size, options.load);
+  apply_mesh_input_options(options.mesh_input, options.load);
   engine::LoadedMesh loaded = engine::load_mesh(options.input, options.load);
-  if (const auto report = loaded.mesh.validate(); !report.ok())
-    throw engine::InputError(options.input + ": invalid tet mesh: " + report.problems.front());
+  print_load_notes(loaded);
   const std::size_t tets_before = loaded.mesh.num_tets();
   const std::size_t vertices_before = loaded.mesh.num_vertices();
 
@@ -98,7 +97,7 @@ void register_cut_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 0.45));
   cmd->add_option("-o,--output", options->output,
                   "write the cut mesh: .vtu (with quality), .node/.ele, or its boundary as .obj/.off/.stl/.ply");
-  add_mesh_input_options(*cmd, options->load, options->size);
+  add_mesh_input_options(*cmd, options->load, options->mesh_input);
   cmd->add_flag("--json", options->json, "print one JSON object");
   cmd->callback([options] { run_cut(*options); });
 }

@@ -1,9 +1,11 @@
 // mtcut: the command line. Each subcommand lives in its own file and
-// registers itself here; errors a user can cause in an input end as one line
-// on stderr and exit code 1; command-line usage errors exit 2.
+// registers itself here. Errors a user can cause in an input end as one line
+// on stderr and exit code 1, as does any other fault (the line names the
+// command and its inputs then); command-line usage errors exit 2.
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
 
 #include "app/bench_command.h"
 #include "app/cut_command.h"
@@ -13,6 +15,24 @@
 #include "app/run_command.h"
 #include "app/view/view_command.h"
 #include "engine/input_error.h"
+
+namespace {
+
+// "mtcut SUBCOMMAND INPUT...": the command that failed and the inputs it was
+// given (its positional arguments), for a fault whose message does not name them.
+std::string failed_command(const CLI::App& app) {
+  std::string text = "mtcut";
+  for (const CLI::App* sub = &app; !sub->get_subcommands().empty();) {
+    sub = sub->get_subcommands().front();
+    text += " " + sub->get_name();
+    for (const CLI::Option* option : sub->get_options())
+      if (option->get_positional())
+        for (const std::string& value : option->results()) text += " " + value;
+  }
+  return text;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -38,7 +58,16 @@ int main(int argc, char** argv) {
     std::cerr << "mtcut: " << e.what() << "\n";
     return 1;
   } catch (const std::bad_alloc&) {
-    std::cerr << "mtcut: out of memory\n";
+    std::cerr << failed_command(app) << ": out of memory\n";
+    return 1;
+  } catch (const std::logic_error& e) {
+    std::cerr << failed_command(app) << ": internal error (please report it with the input): " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << failed_command(app) << ": " << e.what() << "\n";
+    return 1;
+  } catch (...) {
+    std::cerr << failed_command(app) << ": an unknown fault\n";
     return 1;
   }
   return 0;

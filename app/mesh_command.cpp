@@ -18,7 +18,7 @@ struct MeshOptions {
   std::string input;
   std::string output;
   engine::MeshLoadDef load;
-  std::vector<double> size;
+  MeshInputOptions mesh_input;
   bool json = false;
 };
 
@@ -29,13 +29,11 @@ std::string lower_extension(const std::string& path) {
 }
 
 void run_mesh(MeshOptions& options) {
-  apply_builtin_size(options.size, options.load);
+  apply_mesh_input_options(options.mesh_input, options.load);
   const auto start = std::chrono::steady_clock::now();
   const engine::LoadedMesh loaded = engine::load_mesh(options.input, options.load);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  const engine::ValidationReport report = loaded.mesh.validate();
-  if (!report.ok()) throw engine::InputError(options.input + ": invalid tet mesh: " + report.problems.front());
+  print_load_notes(loaded);
   if (!options.output.empty()) write_mesh_output(loaded.mesh, options.output);
 
   nlohmann::ordered_json out = {{"input", options.input}, {"source", loaded.kind}};
@@ -82,7 +80,7 @@ void register_mesh_command(CLI::App& app) {
   cmd->add_option("--min-dihedral", options->load.meshing.min_dihedral_deg, "dihedral angle (degrees) TetGen aims for")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 30.0));
-  add_mesh_input_options(*cmd, options->load, options->size);
+  add_mesh_input_options(*cmd, options->load, options->mesh_input);
   cmd->add_flag("--json", options->json, "print the statistics as one JSON object");
   cmd->add_flag("--verbose", options->load.meshing.verbose, "show TetGen's own output");
   cmd->callback([options] { run_mesh(*options); });

@@ -1,22 +1,50 @@
 #include "app/mesh_input_options.h"
 
+#include <iostream>
+
 #include "engine/input_error.h"
 
 namespace mtcut::app {
 
-void add_mesh_input_options(CLI::App& cmd, engine::MeshLoadDef& load, std::vector<double>& size) {
+void add_mesh_input_options(CLI::App& cmd, engine::MeshLoadDef& load, MeshInputOptions& options) {
   cmd.add_option("--tets", load.builtin_tets, "target tet count of a builtin shape")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  cmd.add_option("--size", size, "extents x,y,z of a builtin shape in metres")->delimiter(',');
-  cmd.add_option("--max-volume", load.meshing.max_volume, "largest tet volume when meshing a surface (0 = none)")
+  cmd.add_option("--size", options.size, "extents x,y,z of a builtin shape in metres")->delimiter(',');
+  cmd.add_option("--max-volume", load.meshing.max_volume,
+                 "largest tet volume in m^3 when meshing a surface (0 = none)")
       ->check(CLI::NonNegativeNumber);
+  CLI::Option* units =
+      cmd.add_option("--units", options.units, "the mesh file's length unit: m (default), dm, cm or mm");
+  CLI::Option* scale =
+      cmd.add_option("--scale", options.scale, "the mesh file's length unit in metres (0.001 for millimetres)")
+          ->check(CLI::PositiveNumber);
+  units->excludes(scale);
 }
 
-void apply_builtin_size(const std::vector<double>& size, engine::MeshLoadDef& load) {
-  if (size.empty()) return;
-  if (size.size() != 3) throw engine::InputError("--size: give three extents x,y,z");
-  load.builtin_size = engine::Vec3(size[0], size[1], size[2]);
+void set_mesh_units(const std::string& units, const std::string& where, engine::MeshLoadDef& load) {
+  const auto metres = engine::metres_per_unit(units);
+  if (!metres) throw engine::InputError(where + " '" + units + "': unknown unit (known: m, dm, cm, mm)");
+  load.metres_per_unit = *metres;
+  load.unit_stated = true;
+}
+
+void apply_mesh_input_options(const MeshInputOptions& options, engine::MeshLoadDef& load) {
+  if (!options.size.empty()) {
+    if (options.size.size() != 3) throw engine::InputError("--size: give three extents x,y,z");
+    load.builtin_size = engine::Vec3(options.size[0], options.size[1], options.size[2]);
+  }
+  if (!options.units.empty()) set_mesh_units(options.units, "--units", load);
+  if (options.scale > 0) {
+    load.metres_per_unit = options.scale;
+    load.unit_stated = true;
+  }
+}
+
+void print_load_notes(const engine::LoadedMesh& loaded) { print_load_notes(loaded, std::cerr); }
+
+void print_load_notes(const engine::LoadedMesh& loaded, std::ostream& out) {
+  for (const std::string& note : loaded.notes) out << "mtcut: " << note << "\n";
 }
 
 }  // namespace mtcut::app

@@ -1,20 +1,38 @@
 #pragma once
 // The mesh options every command that takes a mesh shares (`mtcut mesh`,
-// `mtcut mt`, `mtcut cut`): --tets and --size of a builtin shape, and
-// --max-volume when meshing a surface.
+// `mtcut mt`, `mtcut cut`): --tets and --size of a builtin shape,
+// --max-volume when meshing a surface, --units or --scale of a mesh file;
+// and the notes a load leaves for the user.
 
 #include <CLI/CLI.hpp>
+#include <iosfwd>
+#include <string>
 #include <vector>
 
 #include "engine/mesh_loader.h"
 
 namespace mtcut::app {
 
-// Adds --tets, --size and --max-volume to `cmd`, filling `load` and `size`.
-void add_mesh_input_options(CLI::App& cmd, engine::MeshLoadDef& load, std::vector<double>& size);
+// The options a command's parse fills, applied by apply_mesh_input_options.
+struct MeshInputOptions {
+  std::vector<double> size;  // --size
+  std::string units;         // --units
+  double scale = 0;          // --scale (0 = not given)
+};
 
-// Sets load.builtin_size from --size (left as is when --size was not given);
-// throws InputError unless it holds three extents.
-void apply_builtin_size(const std::vector<double>& size, engine::MeshLoadDef& load);
+// Adds --tets, --size, --max-volume, --units and --scale to `cmd`, filling `load` and `options`.
+void add_mesh_input_options(CLI::App& cmd, engine::MeshLoadDef& load, MeshInputOptions& options);
+
+// Sets load.builtin_size from --size and the file's unit from --units or
+// --scale (each left as is when not given); throws InputError unless --size
+// holds three extents and the unit is one of m, dm, cm, mm.
+void apply_mesh_input_options(const MeshInputOptions& options, engine::MeshLoadDef& load);
+
+// Reads a unit name into `load` (m, dm, cm, mm); throws InputError naming `where` otherwise.
+void set_mesh_units(const std::string& units, const std::string& where, engine::MeshLoadDef& load);
+
+// Prints the load's notes, one line each, on `out` (stderr by default).
+void print_load_notes(const engine::LoadedMesh& loaded);
+void print_load_notes(const engine::LoadedMesh& loaded, std::ostream& out);
 
 }  // namespace mtcut::app

@@ -21,7 +21,7 @@ struct MtOptions {
   std::string preset;
   engine::MeshLoadDef load;
   engine::MtBuildOptions build;
-  std::vector<double> size;
+  MeshInputOptions mesh_input;
   bool no_preserve_boundary = false;
   bool skip_validation = false;
   bool json = false;
@@ -40,7 +40,7 @@ void run_mt(MtOptions& options) {
     options.build = preset.build;
   }
   if (spec.empty()) throw engine::InputError("give a mesh (builtin:NAME or a file) or --preset");
-  apply_builtin_size(options.size, options.load);
+  apply_mesh_input_options(options.mesh_input, options.load);
   if (options.no_preserve_boundary) options.build.preserve_boundary = false;
 
   const BuiltMt built = build_mt_from(spec, options.load, options.build);
@@ -85,8 +85,7 @@ BuiltMt build_mt_from(const std::string& spec, const engine::MeshLoadDef& load, 
   auto start = std::chrono::steady_clock::now();
   const engine::LoadedMesh loaded = engine::load_mesh(spec, load);
   const double mesh_seconds = seconds_since(start);
-  if (const auto report = loaded.mesh.validate(); !report.ok())
-    throw engine::InputError(spec + ": invalid tet mesh: " + report.problems.front());
+  print_load_notes(loaded);
   BuiltMt built;
   start = std::chrono::steady_clock::now();
   built.mt = engine::build_mt(loaded.mesh, build, &built.report);
@@ -119,7 +118,7 @@ void register_mt_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-preserve-boundary", options->no_preserve_boundary,
                 "let collapses move the surface (by at most their error)");
-  add_mesh_input_options(*cmd, options->load, options->size);
+  add_mesh_input_options(*cmd, options->load, options->mesh_input);
   cmd->add_flag("--no-validate", options->skip_validation, "skip MT::validate() (large meshes)");
   cmd->add_flag("--json", options->json, "print one JSON object");
   cmd->callback([options] { run_mt(*options); });

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "app/material_file.h"
+#include "app/mesh_input_options.h"
 #include "app/run_interrupt.h"
 #include "app/run_metrics.h"
 #include "app/run_progress.h"
@@ -47,8 +48,7 @@ std::set<fs::path> summary_paths(const fs::path& dir, const std::string& scenari
 
 engine::Mt build_organ_mt(const ScenarioDef& scenario) {
   const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
-  if (const auto report = loaded.mesh.validate(); !report.ok())
-    throw engine::InputError(scenario.mesh + ": invalid tet mesh: " + report.problems.front());
+  print_load_notes(loaded);
   return engine::build_mt(loaded.mesh, scenario.world.mt);
 }
 

@@ -170,8 +170,13 @@ void print_run_paragraph(std::ostream& out, const nlohmann::ordered_json& s) {
          " the incision does not show)";
   if (!s["first_cut_frame"].is_null())
     p << "; the first cut showed at frame " << s["first_cut_frame"].get<std::uint64_t>();
-  p << "; the MT, frontier and springs are " << (s["valid"].get<bool>() ? "valid" : "NOT valid")
-    << "; state hash " << s["state_hash"].get<std::string>() << ".";
+  p << "; the MT, frontier and springs are " << (s["valid"].get<bool>() ? "valid" : "NOT valid");
+  if (s.contains("problems") && !s["problems"].empty()) {
+    p << " (" << s["problems"].front().get<std::string>();
+    if (s["problems"].size() > 1) p << "; " << s["problems"].size() - 1 << " more in summary.json";
+    p << ")";
+  }
+  p << "; state hash " << s["state_hash"].get<std::string>() << ".";
   if (s.contains("outputs")) {
     const auto& o = s["outputs"];
     p << " Outputs in " << o["dir"].get<std::string>() << ": metrics.csv, summary.json";

@@ -1,27 +1,73 @@
 #include "engine/mesh_loader.h"
 
-#include <filesystem>
+#include <array>
+#include <cmath>
+#include <cstdio>
 
 #include "engine/input_error.h"
 #include "engine/io/mesh_file.h"
 #include "engine/surface_mesh.h"
 
 namespace mtcut::engine {
+namespace {
 
-LoadedMesh load_mesh(const std::string& spec, const MeshLoadDef& def) {
-  if (const auto shape = parse_builtin(spec)) {
-    BuiltinShapeDef shape_def;
-    shape_def.shape = *shape;
-    shape_def.size = def.builtin_size;
-    shape_def.target_tets = def.builtin_tets;
-    return {make_builtin_mesh(shape_def, def.meshing), "builtin"};
+struct NamedUnit {
+  const char* symbol;
+  const char* name;
+  double metres;
+};
+constexpr std::array<NamedUnit, 4> kUnits = {{{"m", "metres", 1.0},
+                                              {"dm", "decimetres", 0.1},
+                                              {"cm", "centimetres", 0.01},
+                                              {"mm", "millimetres", 0.001}}};
+
+// The size an organ is taken to have when suggesting a unit.
+constexpr double kTypicalDiagonal = 0.2;
+
+std::string unit_name(double metres_per_unit) {
+  for (const NamedUnit& u : kUnits)
+    if (u.metres == metres_per_unit) return u.name;
+  char text[64];
+  std::snprintf(text, sizeof text, "units of %g m", metres_per_unit);
+  return text;
+}
+
+std::string format_length(double metres) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g m", metres);
+  return text;
+}
+
+void scale_positions(std::vector<Vec3>& positions, double metres_per_unit) {
+  if (metres_per_unit == 1.0) return;
+  for (Vec3& p : positions) p *= metres_per_unit;
+}
+
+TetMesh mesh_surface(SurfaceMesh surface, const MeshLoadDef& def, const std::string& spec,
+                     std::vector<std::string>& notes) {
+  scale_positions(surface.positions, def.metres_per_unit);
+  if (auto note = implausible_size_note(surface.positions, def, spec)) notes.push_back(std::move(*note));
+  return tetrahedralize(surface, def.meshing, spec);
+}
+
+LoadedMesh load_file(const std::string& spec, const MeshLoadDef& def) {
+  LoadedMesh loaded;
+  if (is_surface_file(spec)) {
+    loaded.mesh = mesh_surface(read_surface_file(spec), def, spec, loaded.notes);
+    loaded.kind = "surface";
+    return loaded;
   }
-  if (is_surface_file(spec)) return {tetrahedralize(read_surface_file(spec), def.meshing, spec), "surface"};
   if (!is_volume_file(spec))
     throw InputError(spec + ": unknown mesh format (surfaces: .obj .off .stl .ply; tet meshes: .node .ele .msh .vtk .vtu)");
 
   RawMesh raw = read_volume_file(spec);
-  if (!raw.tets.empty()) return {make_tet_mesh(std::move(raw.positions), raw.tets, spec), "volume"};
+  if (!raw.tets.empty()) {
+    scale_positions(raw.positions, def.metres_per_unit);
+    if (auto note = implausible_size_note(raw.positions, def, spec)) loaded.notes.push_back(std::move(*note));
+    loaded.mesh = make_tet_mesh(std::move(raw.positions), raw.tets, spec);
+    loaded.kind = "volume";
+    return loaded;
+  }
   if (raw.triangles.empty()) throw InputError(spec + ": the file holds no tetrahedra and no triangles");
   // A surface in a volume format (e.g. VTK POLYDATA): mesh its inside.
   SurfaceMesh surface;
@@ -41,7 +87,67 @@ LoadedMesh load_mesh(const std::string& spec, const MeshLoadDef& def) {
   for (std::size_t v = 0; v < surface.positions.size(); ++v)
     if (!surface.positions[v].allFinite())
       throw InputError(spec + ": point " + std::to_string(v) + " has a non-finite coordinate");
-  return {tetrahedralize(surface, def.meshing, spec), "surface"};
+  loaded.mesh = mesh_surface(std::move(surface), def, spec, loaded.notes);
+  loaded.kind = "surface";
+  return loaded;
+}
+
+}  // namespace
+
+std::optional<double> metres_per_unit(const std::string& name) {
+  for (const NamedUnit& u : kUnits)
+    if (name == u.symbol) return u.metres;
+  return std::nullopt;
+}
+
+std::optional<std::string> implausible_size_note(const std::vector<Vec3>& positions, const MeshLoadDef& def,
+                                                 const std::string& source) {
+  if (def.unit_stated || positions.empty()) return std::nullopt;
+  Vec3 lo = positions.front(), hi = lo;
+  for (const Vec3& p : positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double diagonal = (hi - lo).norm();
+  if (!(diagonal > 0) || (diagonal >= kPlausibleMinDiagonal && diagonal <= kPlausibleMaxDiagonal))
+    return std::nullopt;
+  // The unit that brings the body nearest an organ's size.
+  const double in_file_units = diagonal / def.metres_per_unit;
+  const NamedUnit* best = &kUnits.front();
+  for (const NamedUnit& u : kUnits)
+    if (std::abs(std::log(in_file_units * u.metres / kTypicalDiagonal)) <
+        std::abs(std::log(in_file_units * best->metres / kTypicalDiagonal)))
+      best = &u;
+  std::string note = source + ": the mesh is " + format_length(diagonal) +
+                     " across (its bounding box's diagonal) with its coordinates read as " +
+                     unit_name(def.metres_per_unit) + ", which is not an organ's size";
+  if (best->metres != def.metres_per_unit && in_file_units * best->metres >= kPlausibleMinDiagonal &&
+      in_file_units * best->metres <= kPlausibleMaxDiagonal)
+    note += std::string("; if they are ") + best->name + ", say --units " + best->symbol + " ([mesh] units = \"" +
+            best->symbol + "\" in a scenario)";
+  else
+    note += "; give their unit with --units or [mesh] scale";
+  return note;
+}
+
+LoadedMesh load_mesh(const std::string& spec, const MeshLoadDef& def) {
+  if (!(def.metres_per_unit > 0) || !std::isfinite(def.metres_per_unit))
+    throw InputError(spec + ": the mesh's unit must be a positive length in metres");
+  LoadedMesh loaded;
+  if (const auto shape = parse_builtin(spec)) {
+    if (def.metres_per_unit != 1.0)
+      throw InputError(spec + ": a builtin shape is sized in metres (--size); a unit applies to mesh files");
+    BuiltinShapeDef shape_def;
+    shape_def.shape = *shape;
+    shape_def.size = def.builtin_size;
+    shape_def.target_tets = def.builtin_tets;
+    loaded = {make_builtin_mesh(shape_def, def.meshing), "builtin", {}};
+  } else {
+    loaded = load_file(spec, def);
+  }
+  if (const ValidationReport report = loaded.mesh.validate(); !report.ok())
+    throw InputError(spec + ": invalid tet mesh: " + report.problems.front());
+  return loaded;
 }
 
 }  // namespace mtcut::engine

@@ -1,8 +1,12 @@
 #pragma once
 // One entry point from "what the user named" to a TetMesh: a builtin shape,
 // a surface file to mesh, or a tet mesh file to read. Used by every command.
+// A file's coordinates are in its own length unit (MeshLoadDef::metres_per_unit);
+// the mesh returned is in metres, as everything in mtcut is.
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/builtin_shapes.h"
 #include "engine/tet_mesh.h"
@@ -11,19 +15,40 @@
 namespace mtcut::engine {
 
 struct MeshLoadDef {
-  TetrahedralizeOptions meshing;  // for builtin shapes and surfaces
+  TetrahedralizeOptions meshing;  // for builtin shapes and surfaces, in metres
   Vec3 builtin_size = BuiltinShapeDef{}.size;
   int builtin_tets = BuiltinShapeDef{}.target_tets;
+  // A mesh file's length unit in metres ([mesh] units or scale, --units):
+  // its coordinates are multiplied by it as they are read. Builtin shapes
+  // are sized in metres and take no unit.
+  double metres_per_unit = 1.0;
+  bool unit_stated = false;  // the user named the unit (no size warning then)
 };
 
 // What happened on the way, for the report.
 struct LoadedMesh {
   TetMesh mesh;
-  std::string kind;  // "builtin", "surface" or "volume"
+  std::string kind;                // "builtin", "surface" or "volume"
+  std::vector<std::string> notes;  // one line each, for the user: a size that looks like other units
 };
 
+// The metres in one "m", "dm", "cm" or "mm"; nullopt for any other name.
+std::optional<double> metres_per_unit(const std::string& name);
+
+// Organ-sized bodies, by their bounding box's diagonal in metres: a size
+// outside this range suggests coordinates in other units.
+inline constexpr double kPlausibleMinDiagonal = 1e-3;
+inline constexpr double kPlausibleMaxDiagonal = 5.0;
+
+// A note when `positions` (metres) are not organ-sized: how large they are,
+// read in the unit given, and the unit that would make them so; nullopt when
+// they are organ-sized or the unit was stated.
+std::optional<std::string> implausible_size_note(const std::vector<Vec3>& positions, const MeshLoadDef& def,
+                                                 const std::string& source);
+
 // `spec` is builtin:NAME, a surface (.obj .off .stl .ply, or a .vtk/.msh
-// holding only triangles) or a tet mesh file. Throws InputError.
+// holding only triangles) or a tet mesh file. The mesh is valid
+// (TetMesh::validate). Throws InputError naming `spec` and the first fault.
 LoadedMesh load_mesh(const std::string& spec, const MeshLoadDef& def);
 
 }  // namespace mtcut::engine

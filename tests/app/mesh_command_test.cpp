@@ -45,6 +45,30 @@ TEST_F(MeshCommand, Liver2JsonHasTheStatistics) {
   EXPECT_EQ(r.err, "");
 }
 
+// --units and --scale read a file's coordinates in that unit; a size that
+// looks like millimetres read as metres gets one line saying so.
+TEST_F(MeshCommand, UnitsScaleAFileToMetres) {
+  const std::string box = path("box_mm.obj");
+  ASSERT_EQ(run_mtcut("mesh builtin:box --tets 500 --size 100,200,50 -o " + quoted(box)).exit_code, 0);
+  for (const std::string option : {"--units mm", "--scale 0.001"}) {
+    const CommandResult r = run_mtcut("mesh " + quoted(box) + " " + option + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NEAR(nlohmann::json::parse(r.out)["volume"].get<double>(), 1e-3, 1e-12) << option;
+    EXPECT_EQ(r.err, "") << option;
+  }
+  const CommandResult unsaid = run_mtcut("mesh " + quoted(box) + " --json");
+  ASSERT_EQ(unsaid.exit_code, 0) << unsaid.err;
+  EXPECT_NEAR(nlohmann::json::parse(unsaid.out)["volume"].get<double>(), 1e6, 1e-3);
+  EXPECT_NE(unsaid.err.find("--units mm"), std::string::npos) << unsaid.err;
+  EXPECT_EQ(std::count(unsaid.err.begin(), unsaid.err.end(), '\n'), 1) << unsaid.err;
+
+  const CommandResult unknown = run_mtcut("mesh " + quoted(box) + " --units furlong");
+  EXPECT_EQ(unknown.exit_code, 1);
+  EXPECT_NE(unknown.err.find("unknown unit"), std::string::npos) << unknown.err;
+  EXPECT_EQ(std::count(unknown.err.begin(), unknown.err.end(), '\n'), 1) << unknown.err;
+  EXPECT_EQ(run_mtcut("mesh " + quoted(box) + " --units mm --scale 0.001").exit_code, 2);
+}
+
 TEST_F(MeshCommand, WritesEveryOutputFormat) {
   for (const std::string name : {"box.vtu", "box.node", "box.obj", "box.stl"}) {
     const CommandResult r = run_mtcut("mesh builtin:box --tets 500 --size 1,2,3 -o " + quoted(path(name)));

@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "app/run_summary.h"
 #include "tests/app/run_fixture.h"
 #include "tests/app/run_mtcut.h"
 #include "tests/test_paths.h"
@@ -180,6 +182,51 @@ TEST_F(RunCommand, BadScenariosGiveOneLineWithFileAndLine) {
   const CommandResult missing = run_mtcut("run " + quoted(path("nothing.toml")));
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.err.find("nothing.toml: no such file"), std::string::npos) << missing.err;
+}
+
+// A mesh file's unit: named or in metres, never both, never with a builtin
+// shape; a mesh too large for the spring model names the units to give.
+TEST_F(RunCommand, MeshUnitsAreCheckedAndAMeshInMillimetresIsToldWhatToSay) {
+  const std::string builtin = "source = \"builtin:ellipsoid\"";
+  expect_rejected(variant(builtin, builtin + "\nunits = \"mm\""), "units apply to mesh files");
+  const CommandResult made = run_mtcut("mesh builtin:ellipsoid --tets 2000 --size 0.12,0.08,0.06 -o " +
+                                       quoted(path("organ.obj")));
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const std::string organ = "source = \"" + path("organ.obj") + "\"";
+  expect_rejected(variant(builtin, organ + "\nunits = \"parsec\""), "'mesh.units' must be");
+  expect_rejected(variant(builtin, organ + "\nunits = \"m\"\nscale = 1.0"), "not both");
+  expect_rejected(variant(builtin, organ + "\nscale = -1.0"), "'mesh.scale' must be a positive");
+  // The organ in millimetres, read as metres, is beyond the spring model.
+  const CommandResult mm = run_mtcut("mesh " + quoted(path("organ.obj")) + " --scale 1000 -o " + quoted(path("mm.obj")));
+  ASSERT_EQ(mm.exit_code, 0) << mm.err;
+  const std::string scenario = write("mm.toml", variant(builtin, "source = \"" + path("mm.obj") + "\""));
+  const CommandResult r = run_mtcut("run " + quoted(scenario) + " --frames 2 --out " + quoted(path("out")));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("--units mm"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("beyond what the spring model holds"), std::string::npos) << r.err;
+  // Said in millimetres, it runs.
+  const std::string said = write("said.toml", variant(builtin, "source = \"" + path("mm.obj") + "\"\nunits = \"mm\""));
+  const CommandResult ok = run_mtcut("run " + quoted(said) + " --frames 2 --out " + quoted(path("ok")));
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_EQ(ok.err, "");
+}
+
+// An end state that fails validation names the first failing check.
+TEST_F(RunCommand, AnInvalidEndStateIsNamedInTheParagraph) {
+  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(
+      run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 2 --json --out " +
+                quoted(path("out")))
+          .out);
+  std::ostringstream valid;
+  app::print_run_paragraph(valid, summary);
+  EXPECT_NE(valid.str().find("are valid;"), std::string::npos) << valid.str();
+  summary["valid"] = false;
+  summary["problems"] = {"spring 12 has zero rest length", "tet 4 is flat"};
+  std::ostringstream invalid;
+  app::print_run_paragraph(invalid, summary);
+  EXPECT_NE(invalid.str().find("NOT valid (spring 12 has zero rest length; 1 more in summary.json)"),
+            std::string::npos)
+      << invalid.str();
 }
 
 TEST_F(RunCommand, LineNumbersPointAtTheFault) {

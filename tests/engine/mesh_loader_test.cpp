@@ -1,0 +1,105 @@
+// load_mesh: a file's unit scales it to metres, a size that looks like other
+// units leaves a note naming them, and what is loaded is valid or refused.
+
+#include "engine/mesh_loader.h"
+
+#include <gtest/gtest.h>
+
+#include "engine/io/mesh_file.h"
+#include "engine/mesh_stats.h"
+#include "engine/surface_mesh.h"
+#include "tests/temp_dir.h"
+
+namespace mtcut::engine {
+namespace {
+
+// A box of `size` (file units) written as a tet mesh and as its surface.
+struct BoxFiles {
+  std::string vtu, obj;
+};
+
+BoxFiles write_box(const test::TempDir& dir, const Vec3& size) {
+  MeshLoadDef def;
+  def.builtin_size = size;
+  def.builtin_tets = 300;
+  const TetMesh box = load_mesh("builtin:box", def).mesh;
+  BoxFiles files{dir.file("box.vtu"), dir.file("box.obj")};
+  write_vtu(box, files.vtu);
+  write_surface_file(extract_boundary(box), files.obj);
+  return files;
+}
+
+TEST(MeshUnits, NamedUnitsAreMetresDecimetresCentimetresMillimetres) {
+  EXPECT_EQ(metres_per_unit("m"), 1.0);
+  EXPECT_EQ(metres_per_unit("dm"), 0.1);
+  EXPECT_EQ(metres_per_unit("cm"), 0.01);
+  EXPECT_EQ(metres_per_unit("mm"), 0.001);
+  EXPECT_FALSE(metres_per_unit("km"));
+  EXPECT_FALSE(metres_per_unit("MM"));
+  EXPECT_FALSE(metres_per_unit(""));
+}
+
+TEST(LoadMesh, AUnitScalesTetMeshesAndSurfacesToMetres) {
+  test::TempDir dir;
+  const BoxFiles files = write_box(dir, Vec3(100, 200, 50));  // millimetres
+  for (const std::string& path : {files.vtu, files.obj}) {
+    MeshLoadDef def;
+    def.metres_per_unit = 0.001;
+    def.unit_stated = true;
+    const LoadedMesh loaded = load_mesh(path, def);
+    EXPECT_NEAR(compute_stats(loaded.mesh).volume, 0.1 * 0.2 * 0.05, 1e-12) << path;
+    EXPECT_TRUE(loaded.notes.empty()) << path << ": " << loaded.notes.front();
+  }
+}
+
+TEST(LoadMesh, AMeshInMillimetresReadAsMetresIsToldToSayMillimetres) {
+  test::TempDir dir;
+  const BoxFiles files = write_box(dir, Vec3(180, 120, 90));
+  for (const std::string& path : {files.vtu, files.obj}) {
+    const LoadedMesh loaded = load_mesh(path, {});
+    ASSERT_EQ(loaded.notes.size(), 1u) << path;
+    EXPECT_NE(loaded.notes[0].find(path), std::string::npos) << loaded.notes[0];
+    EXPECT_NE(loaded.notes[0].find("--units mm"), std::string::npos) << loaded.notes[0];
+    EXPECT_EQ(loaded.notes[0].find('\n'), std::string::npos);
+  }
+}
+
+TEST(LoadMesh, SizesSuggestTheUnitThatMakesThemOrganSized) {
+  const std::vector<std::pair<double, std::string>> cases = {
+      {25.0, "--units cm"}, {2500.0, "--units mm"}, {0.0002, "give their unit"}};
+  for (const auto& [extent, says] : cases) {
+    const std::vector<Vec3> box = {Vec3::Zero(), Vec3(extent, 0.6 * extent, 0.5 * extent)};
+    const auto note = implausible_size_note(box, {}, "organ.obj");
+    ASSERT_TRUE(note) << extent;
+    EXPECT_NE(note->find(says), std::string::npos) << *note;
+  }
+  const std::vector<Vec3> organ = {Vec3::Zero(), Vec3(0.2, 0.1, 0.1)};
+  EXPECT_FALSE(implausible_size_note(organ, {}, "organ.obj"));
+  // A stated unit is taken as given, whatever the size.
+  MeshLoadDef stated;
+  stated.unit_stated = true;
+  const std::vector<Vec3> huge = {Vec3::Zero(), Vec3(300, 200, 100)};
+  EXPECT_FALSE(implausible_size_note(huge, stated, "organ.obj"));
+}
+
+TEST(LoadMesh, ABuiltinShapeTakesNoUnit) {
+  MeshLoadDef def;
+  def.metres_per_unit = 0.001;
+  EXPECT_NE(test::input_error_of([&] { load_mesh("builtin:box", def); }).find("sized in metres"), std::string::npos);
+  def.metres_per_unit = 0;
+  EXPECT_NE(test::input_error_of([&] { load_mesh("builtin:box", def); }).find("positive"), std::string::npos);
+}
+
+TEST(LoadMesh, OverlappingTetsAreRefusedNamingTheFile) {
+  test::TempDir dir;
+  // Two tets on the same side of their shared face.
+  const std::string path =
+      dir.write("overlap.node", "5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 0.1 0.1 1\n");
+  dir.write("overlap.ele", "2 4 0\n0 0 1 2 3\n1 0 1 2 4\n");
+  const std::string error = test::input_error_of([&] { load_mesh(path, {}); });
+  EXPECT_NE(error.find("overlap.node"), std::string::npos) << error;
+  EXPECT_NE(error.find("invalid tet mesh"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace mtcut::engine
