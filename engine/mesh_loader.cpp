@@ -52,15 +52,20 @@ TetMesh mesh_surface(SurfaceMesh surface, const MeshLoadDef& def, const std::str
 
 LoadedMesh load_file(const std::string& spec, const MeshLoadDef& def) {
   LoadedMesh loaded;
-  if (is_surface_file(spec)) {
-    loaded.mesh = mesh_surface(read_surface_file(spec), def, spec, loaded.notes);
+  // The content decides where it tells: XML VTK named .vtk, an OBJ named .stl.
+  const MeshFormat named = format_of_extension(spec), format = format_of_file(spec);
+  if (format == MeshFormat::kUnknown)
+    throw InputError(spec + ": unknown mesh format (surfaces: .obj .off .stl .ply; tet meshes: .node .ele .msh .vtk .vtu)");
+  if (format != named)
+    loaded.notes.push_back(spec + ": read as " + format_name(format) + ", which its content is" +
+                           (named == MeshFormat::kUnknown ? std::string() : ", not " + format_name(named)));
+  if (is_surface_format(format)) {
+    loaded.mesh = mesh_surface(read_surface_file(spec, format), def, spec, loaded.notes);
     loaded.kind = "surface";
     return loaded;
   }
-  if (!is_volume_file(spec))
-    throw InputError(spec + ": unknown mesh format (surfaces: .obj .off .stl .ply; tet meshes: .node .ele .msh .vtk .vtu)");
 
-  RawMesh raw = read_volume_file(spec);
+  RawMesh raw = read_volume_file(spec, format);
   if (!raw.tets.empty()) {
     scale_positions(raw.positions, def.metres_per_unit);
     if (auto note = implausible_size_note(raw.positions, def, spec)) loaded.notes.push_back(std::move(*note));

@@ -3,7 +3,10 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -49,11 +52,10 @@ struct QuietOpenMesh {
 // at "nan" or "inf" and silently drops or shifts vertices. Scan ascii files
 // first and name the line of any non-finite number. Binary files need no
 // scan: their NaNs arrive as values and are caught after reading.
-void reject_non_finite_text(const std::string& path) {
+void reject_non_finite_text(const std::string& path, const std::string& ext) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::getline(in, line);
-  const std::string ext = lower_extension(path);
   const bool ascii = ext == ".obj" || ext == ".off" || (ext == ".stl" && line.rfind("solid", 0) == 0) ||
                      (ext == ".ply" && [&] {
                        std::string header;
@@ -78,6 +80,42 @@ void reject_non_finite_text(const std::string& path) {
   }
 }
 
+std::string extension_of(MeshFormat format) {
+  switch (format) {
+    case MeshFormat::kObj: return ".obj";
+    case MeshFormat::kOff: return ".off";
+    case MeshFormat::kStl: return ".stl";
+    case MeshFormat::kPly: return ".ply";
+    default: throw InputError("read_surface_file: " + format_name(format) + " is not a surface format");
+  }
+}
+
+// `path` itself when its extension is `ext`, else a symbolic link to it
+// named with `ext` in the temp folder, removed with the object.
+class ExtensionLink {
+ public:
+  ExtensionLink(const std::string& path, const std::string& ext) : path_(path) {
+    if (lower_extension(path) == ext) return;
+    static std::atomic<int> counter{0};
+    link_ = std::filesystem::temp_directory_path() /
+            ("mtcut-read-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ext);
+    std::error_code ec;
+    std::filesystem::create_symlink(std::filesystem::absolute(path), link_, ec);
+    if (ec) throw InputError(path + ": cannot read it as " + ext + " (" + ec.message() + ")");
+  }
+  ~ExtensionLink() {
+    std::error_code ignored;
+    if (!link_.empty()) std::filesystem::remove(link_, ignored);
+  }
+  ExtensionLink(const ExtensionLink&) = delete;
+  ExtensionLink& operator=(const ExtensionLink&) = delete;
+  std::string path() const { return link_.empty() ? path_ : link_.string(); }
+
+ private:
+  std::string path_;
+  std::filesystem::path link_;
+};
+
 }  // namespace
 
 double SurfaceMesh::enclosed_volume() const {
@@ -97,23 +135,24 @@ std::size_t SurfaceMesh::count_open_edges() const {
   return static_cast<std::size_t>(std::count_if(uses.begin(), uses.end(), [](const auto& e) { return e.second != 2; }));
 }
 
-bool is_surface_file(const std::string& path) {
-  const std::string ext = lower_extension(path);
-  return ext == ".obj" || ext == ".off" || ext == ".stl" || ext == ".ply";
-}
+bool is_surface_file(const std::string& path) { return is_surface_format(format_of_extension(path)); }
 
-SurfaceMesh read_surface_file(const std::string& path) {
+SurfaceMesh read_surface_file(const std::string& path, MeshFormat format) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": no such file");
   if (std::filesystem::file_size(path, ec) == 0) throw InputError(path + ": the file is empty");
 
-  reject_non_finite_text(path);
+  const std::string ext = format == MeshFormat::kUnknown ? lower_extension(path) : extension_of(format);
+  reject_non_finite_text(path, ext);
   OmMesh om;
   {
     QuietOpenMesh quiet;
     OpenMesh::IO::Options options;
-    if (!OpenMesh::IO::read_mesh(om, path, options))
-      throw InputError(path + ": cannot read it as a surface (" + lower_extension(path) + ")");
+    // OpenMesh picks its reader by the name's extension: a file whose
+    // extension is not its format's is read through a link that has it.
+    const ExtensionLink link(path, ext);
+    if (!OpenMesh::IO::read_mesh(om, link.path(), options))
+      throw InputError(path + ": cannot read it as a surface (" + ext + ")");
   }
   if (om.n_faces() == 0) throw InputError(path + ": the surface has no faces");
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/io/mesh_file.h"
 #include "engine/predicates.h"
 
 namespace mtcut::engine {
@@ -27,9 +28,10 @@ struct SurfaceMesh {
 // True for the extensions read_surface_file handles (.obj .off .stl .ply).
 bool is_surface_file(const std::string& path);
 
-// Reads a surface with OpenMesh, triangulating polygons; drops unused vertices.
+// Reads a surface with OpenMesh, triangulating polygons; drops unused
+// vertices. `format` (OBJ, OFF, STL or PLY) overrides the extension's.
 // Throws InputError for a missing, empty or unreadable file, or non-finite coordinates.
-SurfaceMesh read_surface_file(const std::string& path);
+SurfaceMesh read_surface_file(const std::string& path, MeshFormat format = MeshFormat::kUnknown);
 
 // Writes a surface (format from the extension: .obj .off .stl .ply) through
 // OpenMesh, atomically. Throws InputError when the path cannot be written.

@@ -22,12 +22,30 @@ struct RawMesh {
   std::vector<std::array<std::int64_t, 3>> triangles;   // (n_triangles) 0-based, surface files
 };
 
+// The mesh file formats mtcut reads: tet meshes (TetGen, Gmsh, VTK legacy
+// and XML; the VTK and Gmsh readers also take surfaces) and surfaces.
+enum class MeshFormat { kUnknown, kTetgen, kGmsh, kVtkLegacy, kVtkXml, kObj, kOff, kStl, kPly };
+
+// By the lower-cased extension: .node .ele .msh .vtk .vtu .obj .off .stl .ply.
+MeshFormat format_of_extension(const std::string& path);
+// By the file's first bytes (a VTK or XML header, $MeshFormat, ply, OFF, an
+// STL's "solid" or binary size, OBJ's records); kUnknown when they do not
+// tell (TetGen's numbers, an empty or missing file).
+MeshFormat format_of_content(const std::string& path);
+// What the file is: its content's format where that is known, else its extension's.
+MeshFormat format_of_file(const std::string& path);
+// "VTK XML", "Gmsh", ...
+std::string format_name(MeshFormat format);
+// True for the surface-only formats (OBJ, OFF, STL, PLY).
+bool is_surface_format(MeshFormat format);
+
 // True for .node, .ele, .msh, .vtk, .vtu (case-insensitive).
 bool is_volume_file(const std::string& path);
 
-// Reads any of the formats above by extension. A .node or .ele path reads
-// the .node/.ele pair with the same base name.
-RawMesh read_volume_file(const std::string& path);
+// Reads a tet-mesh file in `format` (kTetgen, kGmsh, kVtkLegacy or kVtkXml;
+// by default its extension's). A TetGen path reads the .node/.ele pair with
+// the same base name.
+RawMesh read_volume_file(const std::string& path, MeshFormat format = MeshFormat::kUnknown);
 
 // One scalar per tet, written as VTK cell data.
 struct CellField {

@@ -8,6 +8,7 @@
 #include "engine/io/mesh_file.h"
 #include "engine/mesh_stats.h"
 #include "engine/surface_mesh.h"
+#include "tests/engine/io/io_test_util.h"
 #include "tests/temp_dir.h"
 
 namespace mtcut::engine {
@@ -18,7 +19,7 @@ struct BoxFiles {
   std::string vtu, obj;
 };
 
-BoxFiles write_box(const test::TempDir& dir, const Vec3& size) {
+BoxFiles write_box(const mtcut::test::TempDir& dir, const Vec3& size) {
   MeshLoadDef def;
   def.builtin_size = size;
   def.builtin_tets = 300;
@@ -40,7 +41,7 @@ TEST(MeshUnits, NamedUnitsAreMetresDecimetresCentimetresMillimetres) {
 }
 
 TEST(LoadMesh, AUnitScalesTetMeshesAndSurfacesToMetres) {
-  test::TempDir dir;
+  mtcut::test::TempDir dir;
   const BoxFiles files = write_box(dir, Vec3(100, 200, 50));  // millimetres
   for (const std::string& path : {files.vtu, files.obj}) {
     MeshLoadDef def;
@@ -53,7 +54,7 @@ TEST(LoadMesh, AUnitScalesTetMeshesAndSurfacesToMetres) {
 }
 
 TEST(LoadMesh, AMeshInMillimetresReadAsMetresIsToldToSayMillimetres) {
-  test::TempDir dir;
+  mtcut::test::TempDir dir;
   const BoxFiles files = write_box(dir, Vec3(180, 120, 90));
   for (const std::string& path : {files.vtu, files.obj}) {
     const LoadedMesh loaded = load_mesh(path, {});
@@ -82,21 +83,41 @@ TEST(LoadMesh, SizesSuggestTheUnitThatMakesThemOrganSized) {
   EXPECT_FALSE(implausible_size_note(huge, stated, "organ.obj"));
 }
 
+// A file whose name says one format and whose content another is read by
+// its content, with a note saying so.
+TEST(LoadMesh, AFileIsReadAsItsContentSaysWithANote) {
+  mtcut::test::TempDir dir;
+  const BoxFiles files = write_box(dir, Vec3(0.1, 0.08, 0.06));
+  const std::string obj_named_stl = dir.write("box.stl", test::read_bytes(files.obj));
+  const std::string vtu_named_vtk = dir.write("box.vtk", test::read_bytes(files.vtu));
+  const std::string vtu_named_txt = dir.write("box.txt", test::read_bytes(files.vtu));
+  for (const auto& [path, says] : std::vector<std::pair<std::string, std::string>>{
+           {obj_named_stl, "read as OBJ, which its content is, not STL"},
+           {vtu_named_vtk, "read as VTK XML, which its content is, not legacy VTK"},
+           {vtu_named_txt, "read as VTK XML, which its content is"}}) {
+    const LoadedMesh loaded = load_mesh(path, {});
+    EXPECT_NEAR(compute_stats(loaded.mesh).volume, 0.1 * 0.08 * 0.06, 1e-9) << path;  // OBJ keeps floats
+    ASSERT_EQ(loaded.notes.size(), 1u) << path;
+    EXPECT_EQ(loaded.notes[0], path + ": " + says);
+  }
+  EXPECT_TRUE(load_mesh(files.obj, {}).notes.empty());
+}
+
 TEST(LoadMesh, ABuiltinShapeTakesNoUnit) {
   MeshLoadDef def;
   def.metres_per_unit = 0.001;
-  EXPECT_NE(test::input_error_of([&] { load_mesh("builtin:box", def); }).find("sized in metres"), std::string::npos);
+  EXPECT_NE(mtcut::test::input_error_of([&] { load_mesh("builtin:box", def); }).find("sized in metres"), std::string::npos);
   def.metres_per_unit = 0;
-  EXPECT_NE(test::input_error_of([&] { load_mesh("builtin:box", def); }).find("positive"), std::string::npos);
+  EXPECT_NE(mtcut::test::input_error_of([&] { load_mesh("builtin:box", def); }).find("positive"), std::string::npos);
 }
 
 TEST(LoadMesh, OverlappingTetsAreRefusedNamingTheFile) {
-  test::TempDir dir;
+  mtcut::test::TempDir dir;
   // Two tets on the same side of their shared face.
   const std::string path =
       dir.write("overlap.node", "5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 0.1 0.1 1\n");
   dir.write("overlap.ele", "2 4 0\n0 0 1 2 3\n1 0 1 2 4\n");
-  const std::string error = test::input_error_of([&] { load_mesh(path, {}); });
+  const std::string error = mtcut::test::input_error_of([&] { load_mesh(path, {}); });
   EXPECT_NE(error.find("overlap.node"), std::string::npos) << error;
   EXPECT_NE(error.find("invalid tet mesh"), std::string::npos) << error;
 }

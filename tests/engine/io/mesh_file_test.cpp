@@ -30,6 +30,47 @@ TEST(MeshFile, DispatchesEachRealMeshByExtension) {
   EXPECT_EQ(vtu.tets.size(), 4406u);
 }
 
+TEST(MeshFile, TheContentTellsTheFormatWhereItCan) {
+  using mtcut::test::shared_mesh;
+  EXPECT_EQ(format_of_content(shared_mesh("liver.msh")), MeshFormat::kGmsh);
+  EXPECT_EQ(format_of_content(shared_mesh("liver.vtk")), MeshFormat::kVtkLegacy);
+  EXPECT_EQ(format_of_content(shared_mesh("Armadillo_Tetra_4406.vtu")), MeshFormat::kVtkXml);
+  EXPECT_EQ(format_of_content(shared_mesh("liver2.obj")), MeshFormat::kObj);
+  EXPECT_EQ(format_of_content(shared_mesh("liver.obj")), MeshFormat::kObj);
+  for (const char* name : {"cube_meshio22.msh", "cube_meshio41.msh"})
+    EXPECT_EQ(format_of_content(test::io_data(name)), MeshFormat::kGmsh) << name;
+  for (const char* name : {"cube_meshio_ascii.vtk", "cube_meshio_binary.vtk"})
+    EXPECT_EQ(format_of_content(test::io_data(name)), MeshFormat::kVtkLegacy) << name;
+  for (const char* name : {"cube_meshio_binary.vtu", "cube_meshio_zlib.vtu"})
+    EXPECT_EQ(format_of_content(test::io_data(name)), MeshFormat::kVtkXml) << name;
+  TempDir dir;
+  EXPECT_EQ(format_of_content(dir.write("a.x", "OFF\n4 4 0\n")), MeshFormat::kOff);
+  EXPECT_EQ(format_of_content(dir.write("b.x", "# made by hand\nCOFF\n")), MeshFormat::kOff);
+  EXPECT_EQ(format_of_content(dir.write("c.x", "ply\nformat ascii 1.0\n")), MeshFormat::kPly);
+  EXPECT_EQ(format_of_content(dir.write("d.x", "solid organ\nfacet normal 0 0 1\n")), MeshFormat::kStl);
+  EXPECT_EQ(format_of_content(dir.write("e.x", "\xEF\xBB\xBF# comment\n\nv 0 0 0\n")), MeshFormat::kObj);
+  // A binary STL: 80 header bytes, a count of 1, one 50-byte triangle.
+  std::string stl(84 + 50, '\0');
+  stl[80] = 1;
+  EXPECT_EQ(format_of_content(dir.write("f.x", stl)), MeshFormat::kStl);
+  stl.push_back('\0');  // the size no longer matches the count
+  EXPECT_EQ(format_of_content(dir.write("g.x", stl)), MeshFormat::kUnknown);
+  // TetGen's numbers, an empty or a missing file tell nothing.
+  EXPECT_EQ(format_of_content(dir.write("h.node", "# points\n4 3 0 0\n")), MeshFormat::kUnknown);
+  EXPECT_EQ(format_of_content(dir.write("i.obj", "")), MeshFormat::kUnknown);
+  EXPECT_EQ(format_of_content(dir.file("none.obj")), MeshFormat::kUnknown);
+  EXPECT_EQ(format_of_file(dir.file("h.node")), MeshFormat::kTetgen);
+}
+
+TEST(MeshFile, AFileIsReadByItsContentWhenItsNameDisagrees) {
+  TempDir dir;
+  const std::string xml_named_vtk =
+      dir.write("armadillo.vtk", test::read_bytes(mtcut::test::shared_mesh("Armadillo_Tetra_4406.vtu")));
+  EXPECT_EQ(read_volume_file(xml_named_vtk, format_of_file(xml_named_vtk)).tets.size(), 4406u);
+  const std::string gmsh_named_vtu = dir.write("liver.vtu", test::read_bytes(mtcut::test::shared_mesh("liver.msh")));
+  EXPECT_EQ(read_volume_file(gmsh_named_vtu, format_of_file(gmsh_named_vtu)).tets.size(), 596u);
+}
+
 TEST(MeshFile, UpperCaseExtensionIsReadLikeLowerCase) {
   TempDir dir;
   const std::string path = dir.write("LIVER.MSH", test::read_bytes(mtcut::test::shared_mesh("liver.msh")));
