@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 
+#include "app/mesh_input_options.h"
 #include "cut/mesh_cutter.h"
 #include "cut/split_table.h"
 #include "engine/input_error.h"
@@ -57,7 +58,7 @@ struct BenchMesh {
 };
 
 BenchMesh load_bench_mesh(const std::string& name, const std::string& spec, const engine::MeshLoadDef& load) {
-  BenchMesh out{name, spec, engine::load_mesh(spec, load).mesh, {}};
+  BenchMesh out{name, spec, load_input_mesh(spec, load).mesh, {}};
   for (const CutShape& shape : kCuts) out.cuts.push_back(make_cut(out.mesh, shape));
   return out;
 }

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <functional>
 
+#include "app/mesh_input_options.h"
 #include "cut/mt/mt_pieces.h"
 #include "cut/mt/stroke_cutter.h"
 #include "engine/input_error.h"
@@ -191,7 +192,7 @@ nlohmann::ordered_json run_stroke_bench(const StrokeBenchDef& def) {
   // Both MTs first: a bad mesh fails before any stroke is cut.
   const std::vector<std::string> specs = {"builtin:ellipsoid", liver};
   std::vector<engine::Mt> mts;
-  for (const std::string& spec : specs) mts.push_back(engine::build_mt(engine::load_mesh(spec, load).mesh, {}));
+  for (const std::string& spec : specs) mts.push_back(engine::build_mt(load_input_mesh(spec, load).mesh, {}));
   for (std::size_t i = 0; i < specs.size(); ++i) organs.push_back(bench_organ(specs[i], mts[i], def));
   out["organs"] = organs;
   return out;

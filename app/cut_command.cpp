@@ -31,8 +31,7 @@ void run_cut(CutOptions& options) {
   // The polygon first: a typo in it should not wait for the meshing.
   const cut::CutPolygon polygon = cut::parse_cut_polygon(options.polygon, "--polygon");
   apply_mesh_input_options(options.mesh_input, options.load);
-  engine::LoadedMesh loaded = engine::load_mesh(options.input, options.load);
-  print_load_notes(loaded);
+  engine::LoadedMesh loaded = load_input_mesh(options.input, options.load);
   const std::size_t tets_before = loaded.mesh.num_tets();
   const std::size_t vertices_before = loaded.mesh.num_vertices();
 

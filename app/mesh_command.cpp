@@ -31,9 +31,8 @@ std::string lower_extension(const std::string& path) {
 void run_mesh(MeshOptions& options) {
   apply_mesh_input_options(options.mesh_input, options.load);
   const auto start = std::chrono::steady_clock::now();
-  const engine::LoadedMesh loaded = engine::load_mesh(options.input, options.load);
+  const engine::LoadedMesh loaded = load_input_mesh(options.input, options.load);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  print_load_notes(loaded);
   if (!options.output.empty()) write_mesh_output(loaded.mesh, options.output);
 
   nlohmann::ordered_json out = {{"input", options.input}, {"source", loaded.kind}};

@@ -1,5 +1,7 @@
 #include "app/mesh_input_options.h"
 
+#include <unistd.h>
+
 #include <iostream>
 
 #include "engine/input_error.h"
@@ -41,10 +43,26 @@ void apply_mesh_input_options(const MeshInputOptions& options, engine::MeshLoadD
   }
 }
 
-void print_load_notes(const engine::LoadedMesh& loaded) { print_load_notes(loaded, std::cerr); }
-
-void print_load_notes(const engine::LoadedMesh& loaded, std::ostream& out) {
-  for (const std::string& note : loaded.notes) out << "mtcut: " << note << "\n";
+engine::LoadedMesh load_input_mesh(const std::string& spec, engine::MeshLoadDef load) {
+  bool shown = false;
+  if (::isatty(STDERR_FILENO))
+    load.meshing.progress = [&](double seconds) {
+      std::cerr << "\rmtcut: meshing " << spec << " with TetGen: " << static_cast<long>(seconds) << " s" << std::flush;
+      shown = true;
+    };
+  const auto erase = [&] {
+    if (shown) std::cerr << "\r\033[K" << std::flush;
+  };
+  engine::LoadedMesh loaded;
+  try {
+    loaded = engine::load_mesh(spec, load);
+  } catch (...) {
+    erase();
+    throw;
+  }
+  erase();
+  for (const std::string& note : loaded.notes) std::cerr << "mtcut: " << note << "\n";
+  return loaded;
 }
 
 }  // namespace mtcut::app

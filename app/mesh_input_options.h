@@ -2,10 +2,9 @@
 // The mesh options every command that takes a mesh shares (`mtcut mesh`,
 // `mtcut mt`, `mtcut cut`): --tets and --size of a builtin shape,
 // --max-volume when meshing a surface, --units or --scale of a mesh file;
-// and the notes a load leaves for the user.
+// and the load every command that takes a mesh does.
 
 #include <CLI/CLI.hpp>
-#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -31,8 +30,10 @@ void apply_mesh_input_options(const MeshInputOptions& options, engine::MeshLoadD
 // Reads a unit name into `load` (m, dm, cm, mm); throws InputError naming `where` otherwise.
 void set_mesh_units(const std::string& units, const std::string& where, engine::MeshLoadDef& load);
 
-// Prints the load's notes, one line each, on `out` (stderr by default).
-void print_load_notes(const engine::LoadedMesh& loaded);
-void print_load_notes(const engine::LoadedMesh& loaded, std::ostream& out);
+// engine::load_mesh for a command: while TetGen meshes for over a second,
+// a progress line on stderr when it is a terminal ("mtcut: meshing NAME
+// with TetGen: 3 s", rewritten in place and erased at the end); then the
+// load's notes on stderr, one line each.
+engine::LoadedMesh load_input_mesh(const std::string& spec, engine::MeshLoadDef load);
 
 }  // namespace mtcut::app

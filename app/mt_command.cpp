@@ -83,9 +83,8 @@ engine::MtPreset require_mt_preset(const std::string& name) {
 
 BuiltMt build_mt_from(const std::string& spec, const engine::MeshLoadDef& load, const engine::MtBuildOptions& build) {
   auto start = std::chrono::steady_clock::now();
-  const engine::LoadedMesh loaded = engine::load_mesh(spec, load);
+  const engine::LoadedMesh loaded = load_input_mesh(spec, load);
   const double mesh_seconds = seconds_since(start);
-  print_load_notes(loaded);
   BuiltMt built;
   start = std::chrono::steady_clock::now();
   built.mt = engine::build_mt(loaded.mesh, build, &built.report);

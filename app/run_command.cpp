@@ -47,8 +47,7 @@ std::set<fs::path> summary_paths(const fs::path& dir, const std::string& scenari
 }  // namespace
 
 engine::Mt build_organ_mt(const ScenarioDef& scenario) {
-  const engine::LoadedMesh loaded = engine::load_mesh(scenario.mesh, scenario.mesh_load);
-  print_load_notes(loaded);
+  const engine::LoadedMesh loaded = load_input_mesh(scenario.mesh, scenario.mesh_load);
   return engine::build_mt(loaded.mesh, scenario.world.mt);
 }
 

@@ -47,7 +47,7 @@ TetMesh mesh_surface(SurfaceMesh surface, const MeshLoadDef& def, const std::str
                      std::vector<std::string>& notes) {
   scale_positions(surface.positions, def.metres_per_unit);
   if (auto note = implausible_size_note(surface.positions, def, spec)) notes.push_back(std::move(*note));
-  return tetrahedralize(surface, def.meshing, spec);
+  return tetrahedralize(surface, def.meshing, spec, &notes);
 }
 
 LoadedMesh load_file(const std::string& spec, const MeshLoadDef& def) {

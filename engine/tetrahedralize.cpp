@@ -1,54 +1,26 @@
 #include "engine/tetrahedralize.h"
 
+#include <signal.h>
+#include <sys/wait.h>
 #include <tetgen.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
-#include <fstream>
+#include <cstring>
+#include <iomanip>
+#include <memory>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "engine/input_error.h"
 
 namespace mtcut::engine {
 namespace {
-
-// Sends the process's stdout to a temporary file for the lifetime of the
-// object (TetGen writes there with printf), and hands back what was written.
-class StdoutCapture {
- public:
-  explicit StdoutCapture(bool active) : active_(active) {
-    if (!active_) return;
-    std::fflush(stdout);
-    file_ = std::tmpfile();
-    saved_ = ::dup(STDOUT_FILENO);
-    if (file_ == nullptr || saved_ < 0 || ::dup2(::fileno(file_), STDOUT_FILENO) < 0) active_ = false;
-  }
-  ~StdoutCapture() { restore(); }
-  StdoutCapture(const StdoutCapture&) = delete;
-  StdoutCapture& operator=(const StdoutCapture&) = delete;
-
-  // Restores stdout and returns the captured text.
-  std::string restore() {
-    if (!active_) return text_;
-    std::fflush(stdout);
-    ::dup2(saved_, STDOUT_FILENO);
-    ::close(saved_);
-    active_ = false;
-    std::rewind(file_);
-    char buffer[4096];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, file_)) > 0) text_.append(buffer, n);
-    std::fclose(file_);
-    return text_;
-  }
-
- private:
-  bool active_;
-  std::FILE* file_ = nullptr;
-  int saved_ = -1;
-  std::string text_;
-};
 
 void fill_plc(const SurfaceMesh& surface, tetgenio& in) {
   in.firstnumber = 0;
@@ -82,28 +54,164 @@ std::string switches_for(const TetrahedralizeOptions& options, bool diagnose) {
   return s.str();
 }
 
-// Runs TetGen -d on the surface and names the triangles it finds intersecting;
-// empty when there are none. This must run before meshing: TetGen 1.5.0
-// crashes (freeing its pools) instead of throwing on some self-intersecting
-// inputs, so they must never reach the meshing pass.
-std::string find_self_intersections(const SurfaceMesh& surface, const TetrahedralizeOptions& options) {
+// What one TetGen run in a child process gave back.
+struct TetgenRun {
+  enum class Outcome { kDone, kTetgenError, kCrashed, kTimedOut } outcome = Outcome::kDone;
+  int code = 0;            // TetGen's thrown int (kTetgenError) or the signal (kCrashed)
+  std::string chatter;     // what TetGen printed
+  std::vector<Vec3> positions;
+  std::vector<std::array<std::int64_t, 4>> tets;
+  std::vector<std::array<int, 3>> faces;  // -d: the intersecting facets
+};
+
+constexpr int kChildMeshed = 0, kChildThrew = 3, kChildBadSwitches = 4, kChildCannotWrite = 5;
+
+template <typename T>
+bool put(std::FILE* f, const T* data, std::size_t n) {
+  return n == 0 || std::fwrite(data, sizeof(T), n, f) == n;
+}
+template <typename T>
+bool get(std::FILE* f, T* data, std::size_t n) {
+  return n == 0 || std::fread(data, sizeof(T), n, f) == n;
+}
+
+// The child's work: TetGen on the surface, its output written to `result`
+// (counts, then points, tets and faces as TetGen gives them). Returns the
+// child's exit code.
+int run_in_child(const SurfaceMesh& surface, std::string switches, std::FILE* result) {
   tetgenio in, out;
   fill_plc(surface, in);
   tetgenbehavior behavior;
-  std::string sw = switches_for(options, true);
-  if (!behavior.parse_commandline(sw.data())) return {};
-  StdoutCapture capture(!options.verbose);
+  if (!behavior.parse_commandline(switches.data())) return kChildBadSwitches;
+  std::int32_t code = 0;
   try {
     tetrahedralize(&behavior, &in, &out);
-  } catch (int) {
-    return "the surface intersects itself or is degenerate (TetGen's detection failed)";
+  } catch (int c) {
+    code = c;
   }
-  capture.restore();
-  if (out.numberoftrifaces == 0) return {};
-  // With -d TetGen returns the intersecting facets as triangles in out.trifacelist.
+  std::fflush(stdout);
+  if (code != 0) return put(result, &code, 1) && std::fflush(result) == 0 ? kChildThrew : kChildCannotWrite;
+  const std::int64_t counts[3] = {out.numberofpoints, out.numberoftetrahedra, out.numberoftrifaces};
+  const bool written = put(result, counts, 3) && put(result, out.pointlist, 3 * static_cast<std::size_t>(counts[0])) &&
+                       put(result, &out.numberofcorners, 1) &&
+                       put(result, out.tetrahedronlist, static_cast<std::size_t>(out.numberofcorners * counts[1])) &&
+                       put(result, out.trifacelist, 3 * static_cast<std::size_t>(counts[2])) &&
+                       std::fflush(result) == 0;
+  return written ? kChildMeshed : kChildCannotWrite;
+}
+
+std::string read_all(std::FILE* f) {
+  std::string text;
+  std::rewind(f);
+  char buffer[4096];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
+  return text;
+}
+
+// Runs TetGen with `switches` in a child process and waits for it until
+// `deadline`, calling options.progress about once a second.
+TetgenRun run_tetgen(const SurfaceMesh& surface, const std::string& switches, const TetrahedralizeOptions& options,
+                     std::chrono::steady_clock::time_point deadline, std::chrono::steady_clock::time_point start) {
+  using Clock = std::chrono::steady_clock;
+  TetgenRun run;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> result(std::tmpfile(), &std::fclose);
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> chatter(std::tmpfile(), &std::fclose);
+  if (!result || !chatter) throw InputError("TetGen: cannot make a temporary file");
+  std::fflush(stdout);
+  std::fflush(stderr);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw InputError("TetGen: cannot start a process to mesh in");
+  if (pid == 0) {
+    if (!options.verbose) {
+      ::dup2(::fileno(chatter.get()), STDOUT_FILENO);
+      ::dup2(::fileno(chatter.get()), STDERR_FILENO);  // its failed assertions too
+    }
+    ::_exit(run_in_child(surface, switches, result.get()));
+  }
+
+  int status = 0;
+  // The next whole second since the meshing's start.
+  auto next_report = start + std::chrono::seconds(
+                                 1 + static_cast<long>(std::chrono::duration<double>(Clock::now() - start).count()));
+  for (auto pause = std::chrono::milliseconds(1);; pause = std::min(2 * pause, std::chrono::milliseconds(50))) {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) throw InputError("TetGen: lost its process");
+    const auto now = Clock::now();
+    if (now >= deadline) {
+      ::kill(pid, SIGKILL);
+      while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      run.outcome = TetgenRun::Outcome::kTimedOut;
+      return run;
+    }
+    if (options.progress && now >= next_report) {
+      options.progress(std::chrono::duration<double>(now - start).count());
+      while (next_report <= now) next_report += std::chrono::seconds(1);
+    }
+    std::this_thread::sleep_for(pause);
+  }
+  run.chatter = read_all(chatter.get());
+  if (WIFSIGNALED(status)) {
+    run.outcome = TetgenRun::Outcome::kCrashed;
+    run.code = WTERMSIG(status);
+    return run;
+  }
+  const int exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::rewind(result.get());
+  if (exit_code == kChildThrew) {
+    std::int32_t code = 0;
+    get(result.get(), &code, 1);
+    run.outcome = TetgenRun::Outcome::kTetgenError;
+    run.code = code;
+    return run;
+  }
+  if (exit_code == kChildBadSwitches) throw InputError("TetGen: bad switches '" + switches + "'");
+  std::int64_t counts[3] = {0, 0, 0};
+  int corners = 4;
+  if (exit_code != kChildMeshed || !get(result.get(), counts, 3) || counts[0] < 0 || counts[1] < 0 || counts[2] < 0)
+    throw InputError("TetGen: its process ended without a mesh (exit " + std::to_string(exit_code) + ")");
+  std::vector<double> points(3 * static_cast<std::size_t>(counts[0]));
+  std::vector<int> corner_ids;
+  std::vector<int> faces(3 * static_cast<std::size_t>(counts[2]));
+  bool read = get(result.get(), points.data(), points.size()) && get(result.get(), &corners, 1) && corners >= 4;
+  if (read) {
+    corner_ids.resize(static_cast<std::size_t>(corners) * static_cast<std::size_t>(counts[1]));
+    read = get(result.get(), corner_ids.data(), corner_ids.size()) && get(result.get(), faces.data(), faces.size());
+  }
+  if (!read) throw InputError("TetGen: its process's mesh is cut short");
+  run.positions.resize(static_cast<std::size_t>(counts[0]));
+  for (std::size_t i = 0; i < run.positions.size(); ++i)
+    run.positions[i] = Vec3(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+  run.tets.resize(static_cast<std::size_t>(counts[1]));
+  for (std::size_t t = 0; t < run.tets.size(); ++t)
+    for (std::size_t k = 0; k < 4; ++k) run.tets[t][k] = corner_ids[static_cast<std::size_t>(corners) * t + k];
+  run.faces.resize(static_cast<std::size_t>(counts[2]));
+  for (std::size_t f = 0; f < run.faces.size(); ++f) run.faces[f] = {faces[3 * f], faces[3 * f + 1], faces[3 * f + 2]};
+  return run;
+}
+
+std::string first_error_line(const std::string& chatter) {
+  std::istringstream lines(chatter);
+  std::string line;
+  while (std::getline(lines, line))
+    if (line.find("Error") != std::string::npos || line.find("error") != std::string::npos) return line;
+  return {};
+}
+
+std::string signal_name(int signal) {
+  const char* name = ::strsignal(signal);
+  return name ? name : "signal " + std::to_string(signal);
+}
+
+// Names the triangles TetGen -d found intersecting; empty when there are
+// none. This must run before meshing: TetGen 1.5.0 crashes on some
+// self-intersecting inputs.
+std::string self_intersections(const SurfaceMesh& surface, const TetgenRun& run) {
+  if (run.faces.empty()) return {};
   std::set<std::array<int, 3>> faces;
-  for (int i = 0; i < out.numberoftrifaces; ++i) {
-    std::array<int, 3> f = {out.trifacelist[3 * i], out.trifacelist[3 * i + 1], out.trifacelist[3 * i + 2]};
+  for (std::array<int, 3> f : run.faces) {
     std::sort(f.begin(), f.end());
     faces.insert(f);
   }
@@ -119,65 +227,114 @@ std::string find_self_intersections(const SurfaceMesh& surface, const Tetrahedra
   return text + ")";
 }
 
-std::string first_error_line(const std::string& chatter) {
-  std::istringstream lines(chatter);
-  std::string line;
-  while (std::getline(lines, line))
-    if (line.find("Error") != std::string::npos || line.find("error") != std::string::npos) return line;
-  return {};
+std::string tetgen_fault(int code, const std::string& chatter) {
+  switch (code) {
+    case 1: return "TetGen ran out of memory (raise --max-volume)";
+    case 3: return "the surface intersects itself";
+    case 4: return "the surface has features too small for TetGen's tolerance";
+    case 5: return "the surface has two facets too close to each other";
+    default: {
+      const std::string line = first_error_line(chatter);
+      return "TetGen failed (code " + std::to_string(code) + ")" + (line.empty() ? std::string() : ": " + line);
+    }
+  }
 }
+
+std::string format_number(double value) {
+  std::ostringstream s;
+  s << std::setprecision(3) << value;
+  return s.str();
+}
+
+std::string format_seconds(double seconds) { return format_number(seconds) + " s"; }
 
 }  // namespace
 
-TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& options, const std::string& source) {
+long steiner_point_bound(const SurfaceMesh& surface, const TetrahedralizeOptions& options) {
+  // TetGen adds a few points per surface point refining near the surface
+  // (9 for the shared liver2.obj; 130 for a tube of sliver faces, 1 m long
+  // and 2 cm wide), and about one per five tets max_volume asks for inside.
+  double bound = 100000.0 + 20.0 * static_cast<double>(surface.positions.size());
+  if (options.max_volume > 0) bound += 4.0 * std::abs(surface.enclosed_volume()) / options.max_volume;
+  return static_cast<long>(std::min(bound, 1e9));
+}
+
+TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& options, const std::string& source,
+                       std::vector<std::string>* notes) {
+  using Clock = std::chrono::steady_clock;
   if (surface.triangles.size() < 4) throw InputError(source + ": the surface has fewer than 4 faces");
   if (const std::size_t open = surface.count_open_edges(); open > 0)
     throw InputError(source + ": the surface is not closed (" + std::to_string(open) +
                      " edges are not shared by exactly two faces: a hole or a non-manifold seam)");
   if (options.max_volume < 0 || options.radius_edge_ratio < 0)
     throw InputError(source + ": max volume and quality bound must not be negative");
+  if (!(options.time_limit_seconds > 0)) throw InputError(source + ": the meshing time limit must be positive");
 
-  if (const std::string fault = find_self_intersections(surface, options); !fault.empty())
+  const auto start = Clock::now();
+  const auto limit = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
+  const TetgenRun check = run_tetgen(surface, switches_for(options, true), options, start + limit, start);
+  switch (check.outcome) {
+    case TetgenRun::Outcome::kDone: break;
+    case TetgenRun::Outcome::kTetgenError:
+      throw InputError(source + ": the surface intersects itself or is degenerate (TetGen's detection failed)");
+    case TetgenRun::Outcome::kCrashed:
+      throw InputError(source + ": TetGen crashed (" + signal_name(check.code) + ") checking the surface for self-intersections");
+    case TetgenRun::Outcome::kTimedOut:
+      throw InputError(source + ": TetGen did not finish checking the surface within " +
+                       format_seconds(options.time_limit_seconds));
+  }
+  if (const std::string fault = self_intersections(surface, check); !fault.empty())
     throw InputError(source + ": " + fault);
 
-  tetgenio in, out;
-  fill_plc(surface, in);
-  tetgenbehavior behavior;
-  std::string sw = switches_for(options, false);
-  if (!behavior.parse_commandline(sw.data())) throw InputError(source + ": bad TetGen switches '" + sw + "'");
-
-  int code = 0;
-  std::string chatter;
-  {
-    StdoutCapture capture(!options.verbose);
-    try {
-      tetrahedralize(&behavior, &in, &out);
-    } catch (int c) {
-      code = c;
-    }
-    chatter = capture.restore();
+  // The quality asked for, then a looser bound (kept even if it too stops
+  // at the points' bound), then, after a crash, none; each try runs until
+  // its share of the time limit is spent.
+  const long bound = options.max_added_points > 0 ? options.max_added_points : steiner_point_bound(surface, options);
+  std::vector<TetrahedralizeOptions> tries = {options};
+  if (options.radius_edge_ratio > 0) {
+    TetrahedralizeOptions looser = options;
+    looser.radius_edge_ratio = std::max(2.0, 1.5 * options.radius_edge_ratio);
+    looser.min_dihedral_deg = 0;
+    tries.push_back(looser);
+    TetrahedralizeOptions none = options;
+    none.radius_edge_ratio = 0;
+    tries.push_back(none);
   }
-  switch (code) {
-    case 0: break;
-    case 1: throw InputError(source + ": TetGen ran out of memory (raise --max-volume)");
-    case 3: throw InputError(source + ": the surface intersects itself");
-    case 4: throw InputError(source + ": the surface has features too small for TetGen's tolerance");
-    case 5: throw InputError(source + ": the surface has two facets too close to each other");
-    default: {
-      const std::string line = first_error_line(chatter);
-      throw InputError(source + ": TetGen failed (code " + std::to_string(code) + ")" +
-                       (line.empty() ? std::string() : ": " + line));
+  std::string why;  // why the last try was not kept
+  for (std::size_t i = 0; i < tries.size(); ++i) {
+    constexpr double kShare[] = {0.6, 0.85, 1.0};  // of the time limit, by the end of each try
+    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
+                                      limit * (i + 1 == tries.size() ? 1.0 : kShare[i]));
+    TetgenRun run = run_tetgen(surface, switches_for(tries[i], false) + "S" + std::to_string(bound), tries[i],
+                               deadline, start);
+    if (run.outcome == TetgenRun::Outcome::kTetgenError) throw InputError(source + ": " + tetgen_fault(run.code, run.chatter));
+    if (run.outcome == TetgenRun::Outcome::kDone && run.tets.empty())
+      throw InputError(source + ": TetGen produced no tetrahedra");
+    const long added = static_cast<long>(run.positions.size()) - static_cast<long>(surface.positions.size());
+    const bool at_bound = run.outcome == TetgenRun::Outcome::kDone && added >= bound;
+    const bool keep_at_bound = i + 1 >= tries.size() - 1;  // the looser try, or the last
+    if (run.outcome == TetgenRun::Outcome::kDone && (!at_bound || keep_at_bound)) {
+      const std::string kept = tries[i].radius_edge_ratio > 0
+                                   ? "the looser quality bound " + format_number(tries[i].radius_edge_ratio)
+                                   : std::string("no quality refinement");
+      if (notes && i > 0 && !at_bound) notes->push_back(source + ": TetGen " + why + "; meshed with " + kept + " instead");
+      if (notes && i > 0 && at_bound)
+        notes->push_back(source + ": TetGen " + why + "; with " + kept +
+                         " it reached the bound too, and that mesh is kept: its quality is below what was asked for");
+      if (notes && i == 0 && at_bound)
+        notes->push_back(source + ": TetGen stopped at its bound of " + std::to_string(bound) + " added points");
+      return make_tet_mesh(std::move(run.positions), run.tets, source);
+    }
+    switch (run.outcome) {
+      case TetgenRun::Outcome::kDone: why = "reached its bound of " + std::to_string(bound) + " added points"; break;
+      case TetgenRun::Outcome::kCrashed: why = "crashed (" + signal_name(run.code) + ") refining the mesh"; break;
+      case TetgenRun::Outcome::kTimedOut:
+        why = "did not finish within " + format_seconds(std::chrono::duration<double>(deadline - start).count());
+        break;
+      case TetgenRun::Outcome::kTetgenError: break;
     }
   }
-  if (out.numberoftetrahedra == 0) throw InputError(source + ": TetGen produced no tetrahedra");
-
-  std::vector<Vec3> positions(static_cast<std::size_t>(out.numberofpoints));
-  for (std::size_t i = 0; i < positions.size(); ++i)
-    positions[i] = Vec3(out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]);
-  std::vector<std::array<std::int64_t, 4>> tets(static_cast<std::size_t>(out.numberoftetrahedra));
-  for (std::size_t t = 0; t < tets.size(); ++t)
-    for (int k = 0; k < 4; ++k) tets[t][k] = out.tetrahedronlist[out.numberofcorners * t + k];
-  return make_tet_mesh(std::move(positions), tets, source);
+  throw InputError(source + ": TetGen " + why + ", also without quality refinement");
 }
 
 }  // namespace mtcut::engine

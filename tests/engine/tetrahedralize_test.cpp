@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "engine/builtin_shapes.h"
@@ -80,6 +81,60 @@ TEST(Tetrahedralize, NegativeOptionsAreRejected) {
   TetrahedralizeOptions options;
   options.max_volume = -1;
   EXPECT_THROW(tetrahedralize(unit_box(), options, "box"), InputError);
+}
+
+// A tube 1 m long and 1 cm wide whose faces are slivers 12.5 cm long:
+// TetGen's quality refinement adds 1.6 million points to it unbounded.
+SurfaceMesh sliver_tube() {
+  constexpr int kAround = 200, kAlong = 4;
+  SurfaceMesh tube;
+  for (int i = 0; i <= kAlong; ++i)
+    for (int j = 0; j < kAround; ++j) {
+      const double a = 2 * M_PI * j / kAround;
+      tube.positions.emplace_back(0.005 * std::cos(a), 0.005 * std::sin(a), static_cast<double>(i) / kAlong);
+    }
+  const auto id = [](int i, int j) { return static_cast<std::int32_t>(i * kAround + (j % kAround)); };
+  for (int i = 0; i < kAlong; ++i)
+    for (int j = 0; j < kAround; ++j) {
+      tube.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
+      tube.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
+    }
+  const auto bottom = static_cast<std::int32_t>(tube.positions.size());
+  tube.positions.emplace_back(0, 0, 0);
+  tube.positions.emplace_back(0, 0, 1);
+  for (int j = 0; j < kAround; ++j) {
+    tube.triangles.push_back({bottom, id(0, j + 1), id(0, j)});
+    tube.triangles.push_back({bottom + 1, id(kAlong, j), id(kAlong, j + 1)});
+  }
+  return tube;
+}
+
+TEST(Tetrahedralize, RefinementStopsAtItsBoundOfAddedPointsAndSaysSo) {
+  const SurfaceMesh tube = sliver_tube();
+  EXPECT_GT(steiner_point_bound(tube, {}), 100000);
+  EXPECT_LT(steiner_point_bound(tube, {}), 200000);
+  TetrahedralizeOptions options;
+  options.max_added_points = 3000;
+  std::vector<std::string> notes;
+  const TetMesh mesh = tetrahedralize(tube, options, "tube.obj", &notes);
+  EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().summary();
+  EXPECT_LE(mesh.num_vertices(), tube.positions.size() + 3000);
+  EXPECT_NEAR(mesh.total_volume(), tube.enclosed_volume(), 1e-9 * tube.enclosed_volume());
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("tube.obj: TetGen reached its bound of 3000 added points"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[0].find("looser quality bound 2.25"), std::string::npos) << notes[0];
+  // Within the bound, no note.
+  notes.clear();
+  (void)tetrahedralize(read_surface_file(test::shared_mesh("liver2.obj")), {}, "liver2.obj", &notes);
+  EXPECT_TRUE(notes.empty());
+}
+
+TEST(Tetrahedralize, AMeshingOverItsTimeLimitIsStoppedAndRefused) {
+  TetrahedralizeOptions options;
+  options.time_limit_seconds = 1e-6;
+  const std::string m =
+      input_error_of([&] { tetrahedralize(read_surface_file(test::shared_mesh("liver2.obj")), options, "liver2.obj"); });
+  EXPECT_NE(m.find("liver2.obj: TetGen did not finish"), std::string::npos) << m;
 }
 
 TEST(MeshLoader, LoadsEveryGoodSharedMeshAndRejectsTheBrokenOnes) {
