@@ -70,6 +70,10 @@ LoadedMesh load_file(const std::string& spec, const MeshLoadDef& def) {
     scale_positions(raw.positions, def.metres_per_unit);
     if (auto note = implausible_size_note(raw.positions, def, spec)) loaded.notes.push_back(std::move(*note));
     loaded.mesh = make_tet_mesh(std::move(raw.positions), raw.tets, spec);
+    if (const std::size_t split = split_pinched_vertices(loaded.mesh); split > 0)
+      loaded.notes.push_back(spec + ": parts of the mesh touch only at " + std::to_string(split) +
+                             (split == 1 ? " vertex" : " vertices") +
+                             " (or along edges through them); each part has its own copy of those vertices now");
     loaded.kind = "volume";
     return loaded;
   }

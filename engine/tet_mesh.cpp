@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 
 #include "engine/input_error.h"
@@ -127,6 +128,61 @@ TetMesh make_tet_mesh(std::vector<Vec3> positions, const std::vector<std::array<
     mesh.tets.push_back(tet);
   }
   return mesh;
+}
+
+std::size_t split_pinched_vertices(TetMesh& mesh) {
+  const TetAdjacency adj = build_adjacency(mesh);
+  // The tets around each vertex (CSR).
+  std::vector<std::size_t> first(mesh.num_vertices() + 1, 0);
+  for (const Tet& tet : mesh.tets)
+    for (VertId v : tet) ++first[v.index() + 1];
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) first[v + 1] += first[v];
+  std::vector<std::uint32_t> around(first.back());
+  std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (VertId v : mesh.tets[t]) around[fill[v.index()]++] = static_cast<std::uint32_t>(t);
+
+  std::size_t split = 0;
+  std::vector<int> fan_of(mesh.num_tets(), -1);
+  std::vector<std::uint32_t> stack;
+  const std::size_t original_vertices = mesh.num_vertices();
+  for (std::size_t v = 0; v < original_vertices; ++v) {
+    const VertId vertex(static_cast<std::int32_t>(v));
+    int fans = 0;
+    // Fans: the tets around v joined across their faces through v.
+    for (std::size_t i = first[v]; i < first[v + 1]; ++i) {
+      if (fan_of[around[i]] >= 0) continue;
+      const int fan = fans++;
+      fan_of[around[i]] = fan;
+      stack.push_back(around[i]);
+      while (!stack.empty()) {
+        const std::uint32_t t = stack.back();
+        stack.pop_back();
+        for (int f = 0; f < 4; ++f) {
+          if (mesh.tets[t][f] == vertex) continue;  // the face opposite v does not hold it
+          const TetId u = adj.neighbors[t][f];
+          if (u.valid() && fan_of[u.index()] < 0) {
+            fan_of[u.index()] = fan;
+            stack.push_back(static_cast<std::uint32_t>(u.index()));
+          }
+        }
+      }
+    }
+    // Every fan after the first takes a copy of v.
+    if (fans > 1) ++split;
+    std::vector<VertId> copy(static_cast<std::size_t>(fans), vertex);
+    for (int fan = 1; fan < fans; ++fan) {
+      copy[static_cast<std::size_t>(fan)] = VertId(static_cast<std::int32_t>(mesh.positions.size()));
+      mesh.positions.push_back(mesh.positions[v]);
+    }
+    for (std::size_t i = first[v]; i < first[v + 1]; ++i) {
+      const std::uint32_t t = around[i];
+      for (VertId& w : mesh.tets[t])
+        if (w == vertex) w = copy[static_cast<std::size_t>(fan_of[t])];
+      fan_of[t] = -1;
+    }
+  }
+  return split;
 }
 
 }  // namespace mtcut::engine

@@ -43,4 +43,10 @@ struct TetMesh {
 TetMesh make_tet_mesh(std::vector<Vec3> positions, const std::vector<std::array<std::int64_t, 4>>& tets,
                       const std::string& source);
 
+// Gives each fan of tets around a vertex that no face joins to the others
+// (parts of the mesh that touch only at that vertex, or along an edge
+// through it) its own copy of the vertex, so the boundary is manifold where
+// parts of the mesh only touched. Returns how many vertices it split.
+std::size_t split_pinched_vertices(TetMesh& mesh);
+
 }  // namespace mtcut::engine

@@ -11,6 +11,7 @@
 #include "tests/app/run_fixture.h"
 #include "tests/app/run_mtcut.h"
 #include "tests/test_paths.h"
+#include "tests/touching_cubes.h"
 
 namespace mtcut::test {
 namespace {
@@ -209,6 +210,43 @@ TEST_F(RunCommand, MeshUnitsAreCheckedAndAMeshInMillimetresIsToldWhatToSay) {
   const CommandResult ok = run_mtcut("run " + quoted(said) + " --frames 2 --out " + quoted(path("ok")));
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_EQ(ok.err, "");
+}
+
+// A tet mesh whose two parts touch only along an edge loads (its pinched
+// vertices split, said on stderr), builds an MT, and is cut and simulated.
+TEST_F(RunCommand, ATetMeshWhosePartsTouchAlongAnEdgeIsCut) {
+  const auto [node, ele] = tetgen_text(touching_cubes(0.05, 0));
+  write("cubes.node", node);
+  write("cubes.ele", ele);
+  std::string scenario = "[mesh]\nsource = \"" + path("cubes.node") + "\"\n";
+  scenario += base_.substr(base_.find("[mt]"), base_.find("[[scalpel.keyframes]]") - base_.find("[mt]"));
+  scenario += R"([[scalpel.keyframes]]
+time = 0.0
+base = [0.025, -0.01, 0.08]
+tip = [0.025, -0.01, -0.02]
+engaged = true
+
+[[scalpel.keyframes]]
+time = 0.5
+base = [0.025, 0.06, 0.08]
+tip = [0.025, 0.06, -0.02]
+engaged = true
+)";
+  const auto fixed = scenario.find("offset = -0.06");
+  ASSERT_NE(fixed, std::string::npos);
+  scenario.replace(fixed, std::string("offset = -0.06").size(), "offset = -0.01");  // x <= 1 cm is held
+  const auto floor = scenario.find("floor_height = -0.036");
+  ASSERT_NE(floor, std::string::npos);
+  scenario.replace(floor, std::string("floor_height = -0.036").size(), "floor_height = -0.001");
+  const std::string file = write("cubes.toml", scenario);
+  const CommandResult r = run_mtcut("run " + quoted(file) + " --frames 40 --json --out " + quoted(path("out")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("parts of the mesh touch only at 2 vertices"), std::string::npos) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(out["valid"].get<bool>()) << out.dump();
+  EXPECT_EQ(out["nan_events"].get<int>(), 0);
+  EXPECT_GT(out["tets_total"].get<int>(), 12);  // the cut split tets
+  EXPECT_EQ(out["pieces"].get<int>(), 3) << out.dump();  // the first cube in two, and the second
 }
 
 // An end state that fails validation names the first failing check.

@@ -8,6 +8,7 @@
 #include "engine/input_error.h"
 #include "engine/mesh_loader.h"
 #include "engine/tet_adjacency.h"
+#include "tests/touching_cubes.h"
 
 namespace mtcut::engine {
 namespace {
@@ -170,6 +171,32 @@ TEST(TetMesh, ValidateNamesNonManifoldBoundary) {
   const TetMesh mesh = make_tet_mesh(p, {{0, 1, 2, 3}, {0, 1, 4, 5}}, "pinched");
   const auto report = mesh.validate();
   EXPECT_TRUE(mentions(report, "not manifold")) << report.summary();
+}
+
+// Two cubes touching along an edge or at a vertex: each part gets its own
+// copy of the shared vertices, and the mesh is valid, with the same tets
+// and volume.
+TEST(TetMesh, PinchedVerticesAreSplitSoPartsOnlyTouchingComeApart) {
+  for (const int z_step : {0, 1}) {
+    const RawMesh raw = test::touching_cubes(0.05, z_step);
+    TetMesh mesh = make_tet_mesh(raw.positions, raw.tets, "cubes");
+    if (z_step == 0) EXPECT_FALSE(mesh.validate().ok());  // an edge on four boundary faces
+    const double volume = mesh.total_volume();
+    const std::size_t shared = z_step == 0 ? 2 : 1;
+    EXPECT_EQ(split_pinched_vertices(mesh), shared) << z_step;
+    EXPECT_EQ(mesh.num_vertices(), 16u);
+    EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().summary();
+    EXPECT_NEAR(mesh.total_volume(), volume, 1e-15);
+    // No tet of the first cube shares a vertex with the second now.
+    for (std::size_t t = 0; t < 6; ++t)
+      for (std::size_t u = 6; u < 12; ++u)
+        for (VertId a : mesh.tets[t])
+          for (VertId b : mesh.tets[u]) EXPECT_NE(a, b) << t << " " << u;
+    EXPECT_EQ(split_pinched_vertices(mesh), 0u);  // nothing left to split
+  }
+  TetMesh cube = kuhn_cube();
+  EXPECT_EQ(split_pinched_vertices(cube), 0u);
+  EXPECT_EQ(cube.num_vertices(), 8u);
 }
 
 }  // namespace
