@@ -22,6 +22,8 @@ void add_mesh_input_options(CLI::App& cmd, engine::MeshLoadDef& load, MeshInputO
       cmd.add_option("--scale", options.scale, "the mesh file's length unit in metres (0.001 for millimetres)")
           ->check(CLI::PositiveNumber);
   units->excludes(scale);
+  cmd.add_flag("--strict", load.strict,
+               "refuse a surface that is open, non-manifold or crosses itself instead of repairing it");
 }
 
 void set_mesh_units(const std::string& units, const std::string& where, engine::MeshLoadDef& load) {

@@ -1,8 +1,8 @@
 #pragma once
 // The mesh options every command that takes a mesh shares (`mtcut mesh`,
 // `mtcut mt`, `mtcut cut`): --tets and --size of a builtin shape,
-// --max-volume when meshing a surface, --units or --scale of a mesh file;
-// and the load every command that takes a mesh does.
+// --max-volume when meshing a surface, --units or --scale of a mesh file,
+// --strict (no repair); and the load every command that takes a mesh does.
 
 #include <CLI/CLI.hpp>
 #include <string>
@@ -19,7 +19,7 @@ struct MeshInputOptions {
   double scale = 0;          // --scale (0 = not given)
 };
 
-// Adds --tets, --size, --max-volume, --units and --scale to `cmd`, filling `load` and `options`.
+// Adds --tets, --size, --max-volume, --units, --scale and --strict to `cmd`, filling `load` and `options`.
 void add_mesh_input_options(CLI::App& cmd, engine::MeshLoadDef& load, MeshInputOptions& options);
 
 // Sets load.builtin_size from --size and the file's unit from --units or

@@ -23,6 +23,7 @@ void read_mesh(TomlTable& t, const std::string& scenario_dir, ScenarioDef& s) {
   t.read("size", s.mesh_load.builtin_size);
   t.read("max_volume", s.mesh_load.meshing.max_volume);
   t.read("quality", s.mesh_load.meshing.radius_edge_ratio);
+  t.read("strict", s.mesh_load.strict);
   if (s.mesh_load.builtin_tets < 1) t.fail(t.node("tets"), "'mesh.tets' must be at least 1");
   // The file's length unit, by name or in metres; everything else in a scenario is in metres.
   if (t.node("units") && t.node("scale")) t.fail(t.node("scale"), "give 'mesh.units' or 'mesh.scale', not both");

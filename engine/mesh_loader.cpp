@@ -7,6 +7,7 @@
 #include "engine/input_error.h"
 #include "engine/io/mesh_file.h"
 #include "engine/surface_mesh.h"
+#include "engine/surface_repair.h"
 
 namespace mtcut::engine {
 namespace {
@@ -47,7 +48,24 @@ TetMesh mesh_surface(SurfaceMesh surface, const MeshLoadDef& def, const std::str
                      std::vector<std::string>& notes) {
   scale_positions(surface.positions, def.metres_per_unit);
   if (auto note = implausible_size_note(surface.positions, def, spec)) notes.push_back(std::move(*note));
-  return tetrahedralize(surface, def.meshing, spec, &notes);
+  if (def.strict) return tetrahedralize(surface, def.meshing, spec, &notes);
+  const SurfaceMesh input = surface;
+  const SurfaceRepair repair = repair_surface(surface, spec);
+  try {
+    TetMesh mesh = tetrahedralize(surface, def.meshing, spec, &notes);
+    if (repair.changed()) notes.push_back(repair.describe(spec));
+    return mesh;
+  } catch (const InputError&) {
+    // What TetGen still refuses (faces closer than its tolerance, a crossing
+    // CGAL's check missed) is wrapped whole.
+    if (repair.step == SurfaceRepair::Step::kWrap) throw;
+    surface = input;
+    const SurfaceRepair wrapped = repair_surface(surface, spec, true);
+    TetMesh mesh = tetrahedralize(surface, def.meshing, spec, &notes);
+    notes.push_back(wrapped.describe(spec) + " (TetGen refused the " +
+                    (repair.changed() ? std::string("lighter repair") : std::string("surface as it was")) + ")");
+    return mesh;
+  }
 }
 
 LoadedMesh load_file(const std::string& spec, const MeshLoadDef& def) {

@@ -23,13 +23,16 @@ struct MeshLoadDef {
   // are sized in metres and take no unit.
   double metres_per_unit = 1.0;
   bool unit_stated = false;  // the user named the unit (no size warning then)
+  // A surface that is not closed, manifold and free of self-intersections
+  // is refused, not repaired (surface_repair.h).
+  bool strict = false;
 };
 
 // What happened on the way, for the report.
 struct LoadedMesh {
   TetMesh mesh;
   std::string kind;                // "builtin", "surface" or "volume"
-  std::vector<std::string> notes;  // one line each, for the user: a size that looks like other units
+  std::vector<std::string> notes;  // one line each, for the user: a repair, a size that looks like other units, ...
 };
 
 // The metres in one "m", "dm", "cm" or "mm"; nullopt for any other name.
@@ -47,8 +50,9 @@ std::optional<std::string> implausible_size_note(const std::vector<Vec3>& positi
                                                  const std::string& source);
 
 // `spec` is builtin:NAME, a surface (.obj .off .stl .ply, or a .vtk/.msh
-// holding only triangles) or a tet mesh file. The mesh is valid
-// (TetMesh::validate). Throws InputError naming `spec` and the first fault.
+// holding only triangles; repaired unless def.strict) or a tet mesh file
+// (its pinched vertices split). The mesh is valid (TetMesh::validate).
+// Throws InputError naming `spec` and the first fault.
 LoadedMesh load_mesh(const std::string& spec, const MeshLoadDef& def);
 
 }  // namespace mtcut::engine

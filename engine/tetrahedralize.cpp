@@ -1,22 +1,16 @@
 #include "engine/tetrahedralize.h"
 
-#include <signal.h>
-#include <sys/wait.h>
 #include <tetgen.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <iomanip>
-#include <memory>
 #include <set>
 #include <sstream>
-#include <thread>
 
+#include "engine/child_process.h"
 #include "engine/input_error.h"
 
 namespace mtcut::engine {
@@ -66,19 +60,10 @@ struct TetgenRun {
 
 constexpr int kChildMeshed = 0, kChildThrew = 3, kChildBadSwitches = 4, kChildCannotWrite = 5;
 
-template <typename T>
-bool put(std::FILE* f, const T* data, std::size_t n) {
-  return n == 0 || std::fwrite(data, sizeof(T), n, f) == n;
-}
-template <typename T>
-bool get(std::FILE* f, T* data, std::size_t n) {
-  return n == 0 || std::fread(data, sizeof(T), n, f) == n;
-}
-
 // The child's work: TetGen on the surface, its output written to `result`
 // (counts, then points, tets and faces as TetGen gives them). Returns the
 // child's exit code.
-int run_in_child(const SurfaceMesh& surface, std::string switches, std::FILE* result) {
+int tetgen_in_child(const SurfaceMesh& surface, std::string switches, std::FILE* result) {
   tetgenio in, out;
   fill_plc(surface, in);
   tetgenbehavior behavior;
@@ -89,96 +74,59 @@ int run_in_child(const SurfaceMesh& surface, std::string switches, std::FILE* re
   } catch (int c) {
     code = c;
   }
-  std::fflush(stdout);
-  if (code != 0) return put(result, &code, 1) && std::fflush(result) == 0 ? kChildThrew : kChildCannotWrite;
+  if (code != 0) return put_values(result, &code, 1) ? kChildThrew : kChildCannotWrite;
   const std::int64_t counts[3] = {out.numberofpoints, out.numberoftetrahedra, out.numberoftrifaces};
-  const bool written = put(result, counts, 3) && put(result, out.pointlist, 3 * static_cast<std::size_t>(counts[0])) &&
-                       put(result, &out.numberofcorners, 1) &&
-                       put(result, out.tetrahedronlist, static_cast<std::size_t>(out.numberofcorners * counts[1])) &&
-                       put(result, out.trifacelist, 3 * static_cast<std::size_t>(counts[2])) &&
-                       std::fflush(result) == 0;
+  const bool written =
+      put_values(result, counts, 3) && put_values(result, out.pointlist, 3 * static_cast<std::size_t>(counts[0])) &&
+      put_values(result, &out.numberofcorners, 1) &&
+      put_values(result, out.tetrahedronlist, static_cast<std::size_t>(out.numberofcorners * counts[1])) &&
+      put_values(result, out.trifacelist, 3 * static_cast<std::size_t>(counts[2]));
   return written ? kChildMeshed : kChildCannotWrite;
-}
-
-std::string read_all(std::FILE* f) {
-  std::string text;
-  std::rewind(f);
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
-  return text;
 }
 
 // Runs TetGen with `switches` in a child process and waits for it until
 // `deadline`, calling options.progress about once a second.
 TetgenRun run_tetgen(const SurfaceMesh& surface, const std::string& switches, const TetrahedralizeOptions& options,
                      std::chrono::steady_clock::time_point deadline, std::chrono::steady_clock::time_point start) {
-  using Clock = std::chrono::steady_clock;
+  ChildOptions child;
+  child.deadline = deadline;
+  child.quiet = !options.verbose;
+  child.progress = options.progress;
+  child.start = start;
+  const ChildRun c = run_in_child([&](std::FILE* result) { return tetgen_in_child(surface, switches, result); }, child);
   TetgenRun run;
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> result(std::tmpfile(), &std::fclose);
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> chatter(std::tmpfile(), &std::fclose);
-  if (!result || !chatter) throw InputError("TetGen: cannot make a temporary file");
-  std::fflush(stdout);
-  std::fflush(stderr);
-  const pid_t pid = ::fork();
-  if (pid < 0) throw InputError("TetGen: cannot start a process to mesh in");
-  if (pid == 0) {
-    if (!options.verbose) {
-      ::dup2(::fileno(chatter.get()), STDOUT_FILENO);
-      ::dup2(::fileno(chatter.get()), STDERR_FILENO);  // its failed assertions too
-    }
-    ::_exit(run_in_child(surface, switches, result.get()));
-  }
-
-  int status = 0;
-  // The next whole second since the meshing's start.
-  auto next_report = start + std::chrono::seconds(
-                                 1 + static_cast<long>(std::chrono::duration<double>(Clock::now() - start).count()));
-  for (auto pause = std::chrono::milliseconds(1);; pause = std::min(2 * pause, std::chrono::milliseconds(50))) {
-    const pid_t done = ::waitpid(pid, &status, WNOHANG);
-    if (done == pid) break;
-    if (done < 0 && errno != EINTR) throw InputError("TetGen: lost its process");
-    const auto now = Clock::now();
-    if (now >= deadline) {
-      ::kill(pid, SIGKILL);
-      while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-      }
-      run.outcome = TetgenRun::Outcome::kTimedOut;
-      return run;
-    }
-    if (options.progress && now >= next_report) {
-      options.progress(std::chrono::duration<double>(now - start).count());
-      while (next_report <= now) next_report += std::chrono::seconds(1);
-    }
-    std::this_thread::sleep_for(pause);
-  }
-  run.chatter = read_all(chatter.get());
-  if (WIFSIGNALED(status)) {
-    run.outcome = TetgenRun::Outcome::kCrashed;
-    run.code = WTERMSIG(status);
+  run.chatter = c.chatter;
+  if (c.outcome == ChildRun::Outcome::kTimedOut) {
+    run.outcome = TetgenRun::Outcome::kTimedOut;
     return run;
   }
-  const int exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::rewind(result.get());
-  if (exit_code == kChildThrew) {
+  if (c.outcome == ChildRun::Outcome::kCrashed) {
+    run.outcome = TetgenRun::Outcome::kCrashed;
+    run.code = c.code;
+    return run;
+  }
+  std::size_t at = 0;
+  if (c.code == kChildThrew) {
     std::int32_t code = 0;
-    get(result.get(), &code, 1);
+    get_values(c.output, at, &code, 1);
     run.outcome = TetgenRun::Outcome::kTetgenError;
     run.code = code;
     return run;
   }
-  if (exit_code == kChildBadSwitches) throw InputError("TetGen: bad switches '" + switches + "'");
+  if (c.code == kChildBadSwitches) throw InputError("TetGen: bad switches '" + switches + "'");
   std::int64_t counts[3] = {0, 0, 0};
   int corners = 4;
-  if (exit_code != kChildMeshed || !get(result.get(), counts, 3) || counts[0] < 0 || counts[1] < 0 || counts[2] < 0)
-    throw InputError("TetGen: its process ended without a mesh (exit " + std::to_string(exit_code) + ")");
+  if (c.code != kChildMeshed || !get_values(c.output, at, counts, 3) || counts[0] < 0 || counts[1] < 0 || counts[2] < 0)
+    throw InputError("TetGen: its process ended without a mesh (exit " + std::to_string(c.code) + ")");
   std::vector<double> points(3 * static_cast<std::size_t>(counts[0]));
   std::vector<int> corner_ids;
   std::vector<int> faces(3 * static_cast<std::size_t>(counts[2]));
-  bool read = get(result.get(), points.data(), points.size()) && get(result.get(), &corners, 1) && corners >= 4;
+  bool read = get_values(c.output, at, points.data(), points.size()) && get_values(c.output, at, &corners, 1) &&
+              corners >= 4;
   if (read) {
     corner_ids.resize(static_cast<std::size_t>(corners) * static_cast<std::size_t>(counts[1]));
-    read = get(result.get(), corner_ids.data(), corner_ids.size()) && get(result.get(), faces.data(), faces.size());
+    read = get_values(c.output, at, corner_ids.data(), corner_ids.size()) &&
+           get_values(c.output, at, faces.data(), faces.size());
   }
   if (!read) throw InputError("TetGen: its process's mesh is cut short");
   run.positions.resize(static_cast<std::size_t>(counts[0]));
@@ -198,11 +146,6 @@ std::string first_error_line(const std::string& chatter) {
   while (std::getline(lines, line))
     if (line.find("Error") != std::string::npos || line.find("error") != std::string::npos) return line;
   return {};
-}
-
-std::string signal_name(int signal) {
-  const char* name = ::strsignal(signal);
-  return name ? name : "signal " + std::to_string(signal);
 }
 
 // Names the triangles TetGen -d found intersecting; empty when there are

@@ -20,9 +20,9 @@ class MeshCommand : public ::testing::Test {
   std::string path(const std::string& name) const { return dir_.file(name); }
   std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
   // Expects a one-line error naming `what` and exit code 1, and no output file.
-  void expect_rejected(const std::string& input, const std::string& what) const {
+  void expect_rejected(const std::string& input, const std::string& what, const std::string& options = "") const {
     const std::string out = path("out.vtu");
-    const CommandResult r = run_mtcut("mesh " + quoted(input) + " -o " + quoted(out));
+    const CommandResult r = run_mtcut("mesh " + quoted(input) + " -o " + quoted(out) + options);
     EXPECT_EQ(r.exit_code, 1) << input << "\n" << r.err;
     EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -102,16 +102,29 @@ TEST_F(MeshCommand, BrokenSharedMeshesAreRejected) {
 TEST_F(MeshCommand, BadFilesAreRejected) {
   expect_rejected(path("missing.obj"), "no such file");
   expect_rejected(write("empty.off", ""), "empty");
-  // A pyramid with one side missing.
+  // A pyramid with one side missing: refused when strict (repaired otherwise, below).
   expect_rejected(write("hole.obj",
                         "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\n"
                         "f 1 3 2\nf 1 4 3\nf 1 2 5\nf 2 3 5\nf 3 4 5\n"),
-                  "hole.obj: the surface is not closed");
+                  "hole.obj: the surface is not closed", " --strict");
   expect_rejected(write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n"),
                   "non-finite");
   expect_rejected(write("cut.node", "4 3 0 0\n0 0 0 0\n1 1 0 0\n"), "cut.node");
   expect_rejected(write("organ.xyz", "1 2 3\n"), "unknown mesh format");
   expect_rejected("builtin:spleen", "unknown built-in shape");
+}
+
+// Without --strict a surface with a hole is repaired, and one line says how.
+TEST_F(MeshCommand, ASurfaceWithAHoleIsRepairedAndSaysSo) {
+  const std::string hole = write("hole.obj",
+                                 "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\n"
+                                 "f 1 3 2\nf 1 4 3\nf 1 2 5\nf 2 3 5\nf 3 4 5\n");
+  const CommandResult r = run_mtcut("mesh " + quoted(hole) + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NEAR(nlohmann::json::parse(r.out)["volume"].get<double>(), 1.0 / 3.0, 1e-12);
+  EXPECT_NE(r.err.find("hole.obj: repaired (holes closed): 5 faces in, 6 out, 1 holes closed"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
 TEST_F(MeshCommand, FailedRunKeepsAnExistingOutput) {

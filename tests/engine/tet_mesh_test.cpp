@@ -180,7 +180,9 @@ TEST(TetMesh, PinchedVerticesAreSplitSoPartsOnlyTouchingComeApart) {
   for (const int z_step : {0, 1}) {
     const RawMesh raw = test::touching_cubes(0.05, z_step);
     TetMesh mesh = make_tet_mesh(raw.positions, raw.tets, "cubes");
-    if (z_step == 0) EXPECT_FALSE(mesh.validate().ok());  // an edge on four boundary faces
+    if (z_step == 0) {
+      EXPECT_FALSE(mesh.validate().ok());  // an edge on four boundary faces
+    }
     const double volume = mesh.total_volume();
     const std::size_t shared = z_step == 0 ? 2 : 1;
     EXPECT_EQ(split_pinched_vertices(mesh), shared) << z_step;

@@ -1,0 +1,94 @@
+#include "engine/child_process.h"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <memory>
+#include <thread>
+
+#include "engine/input_error.h"
+
+namespace mtcut::engine {
+namespace {
+
+std::string read_all(std::FILE* f) {
+  std::string text;
+  std::rewind(f);
+  char buffer[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
+  return text;
+}
+
+}  // namespace
+
+std::string signal_name(int signal) {
+  const char* name = ::strsignal(signal);
+  return name ? name : "signal " + std::to_string(signal);
+}
+
+ChildRun run_in_child(const std::function<int(std::FILE* result)>& work, const ChildOptions& options) {
+  using Clock = std::chrono::steady_clock;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> result(std::tmpfile(), &std::fclose);
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> chatter(std::tmpfile(), &std::fclose);
+  if (!result || !chatter) throw InputError("cannot make a temporary file for a child process");
+  std::fflush(stdout);
+  std::fflush(stderr);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw InputError("cannot start a child process");
+  if (pid == 0) {
+    if (options.quiet) {
+      ::dup2(::fileno(chatter.get()), STDOUT_FILENO);
+      ::dup2(::fileno(chatter.get()), STDERR_FILENO);
+    }
+    int code = 1;
+    try {
+      code = work(result.get());
+    } catch (...) {
+      code = 1;
+    }
+    std::fflush(stdout);
+    std::fflush(stderr);
+    std::fflush(result.get());
+    ::_exit(code);  // no atexit handlers, destructors or leak checks of the parent's state
+  }
+
+  ChildRun run;
+  int status = 0;
+  // Reports fall on whole seconds since the start.
+  auto next_report = options.start + std::chrono::seconds(1 + static_cast<long>(std::chrono::duration<double>(
+                                                                   Clock::now() - options.start)
+                                                                   .count()));
+  for (auto pause = std::chrono::milliseconds(1);; pause = std::min(2 * pause, std::chrono::milliseconds(50))) {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) throw InputError("lost a child process");
+    const auto now = Clock::now();
+    if (now >= options.deadline) {
+      ::kill(pid, SIGKILL);
+      while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      run.outcome = ChildRun::Outcome::kTimedOut;
+      return run;
+    }
+    if (options.progress && now >= next_report) {
+      options.progress(std::chrono::duration<double>(now - options.start).count());
+      while (next_report <= now) next_report += std::chrono::seconds(1);
+    }
+    std::this_thread::sleep_for(pause);
+  }
+  run.chatter = read_all(chatter.get());
+  if (WIFSIGNALED(status)) {
+    run.outcome = ChildRun::Outcome::kCrashed;
+    run.code = WTERMSIG(status);
+    return run;
+  }
+  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.output = read_all(result.get());
+  return run;
+}
+
+}  // namespace mtcut::engine
