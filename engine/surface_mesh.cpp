@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
+#include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,6 +18,7 @@
 #include <unordered_map>
 
 #include "engine/atomic_file.h"
+#include "engine/child_process.h"
 #include "engine/input_error.h"
 #include "engine/tet_adjacency.h"
 
@@ -47,6 +51,51 @@ struct QuietOpenMesh {
     omout().enable();
   }
 };
+
+// OpenMesh's PLY, OFF and binary STL readers loop over the counts a header
+// declares, for minutes when a damaged header declares billions: refuse
+// counts the file is too short to hold (at least 2 bytes a number in text,
+// the exact record sizes in binary).
+void reject_impossible_counts(const std::string& path, const std::string& ext) {
+  std::error_code ec;
+  const auto size = static_cast<double>(std::filesystem::file_size(path, ec));
+  std::ifstream in(path, std::ios::binary);
+  const auto refuse = [&](const std::string& what) {
+    throw InputError(path + ": " + what + ", more than the file's " + std::to_string(static_cast<long long>(size)) +
+                     " bytes can hold");
+  };
+  if (ext == ".ply") {
+    std::string line, format;
+    double needed = 0;
+    for (int n = 0; n < 200 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++n) {
+      std::istringstream words(line);
+      std::string key, element;
+      double count = 0;
+      words >> key;
+      if (key == "format") words >> format;
+      if (key == "element" && words >> element >> count) {
+        if (!(count >= 0)) refuse("its header declares a negative count");
+        needed += count * (element == "vertex" ? (format == "ascii" ? 6 : 12) : (format == "ascii" ? 8 : 13));
+      }
+    }
+    if (needed > size) refuse("its header declares " + std::to_string(static_cast<long long>(needed)) + " bytes of elements");
+  } else if (ext == ".off") {
+    std::string header;
+    double vertices = 0, faces = 0;
+    if (in >> header && header.size() >= 3 && header.compare(header.size() - 3, 3, "OFF") == 0 &&
+        in >> vertices >> faces && vertices * 6 + faces * 8 > size)
+      refuse("its header declares " + std::to_string(static_cast<long long>(vertices)) + " vertices and " +
+             std::to_string(static_cast<long long>(faces)) + " faces");
+  } else if (ext == ".stl") {
+    std::string head(84, '\0');
+    in.read(head.data(), 84);
+    if (in.gcount() == 84 && head.rfind("solid", 0) != 0) {
+      std::uint32_t triangles = 0;
+      std::memcpy(&triangles, head.data() + 80, sizeof triangles);
+      if (84 + 50.0 * triangles > size) refuse("its header declares " + std::to_string(triangles) + " triangles");
+    }
+  }
+}
 
 // OpenMesh's ascii readers parse numbers with stream extraction, which stops
 // at "nan" or "inf" and silently drops or shifts vertices. Scan ascii files
@@ -137,13 +186,10 @@ std::size_t SurfaceMesh::count_open_edges() const {
 
 bool is_surface_file(const std::string& path) { return is_surface_format(format_of_extension(path)); }
 
-SurfaceMesh read_surface_file(const std::string& path, MeshFormat format) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": no such file");
-  if (std::filesystem::file_size(path, ec) == 0) throw InputError(path + ": the file is empty");
+namespace {
 
-  const std::string ext = format == MeshFormat::kUnknown ? lower_extension(path) : extension_of(format);
-  reject_non_finite_text(path, ext);
+// Reads the surface with OpenMesh (in the process it is called in).
+SurfaceMesh read_with_openmesh(const std::string& path, const std::string& ext) {
   OmMesh om;
   {
     QuietOpenMesh quiet;
@@ -176,6 +222,58 @@ SurfaceMesh read_surface_file(const std::string& path, MeshFormat format) {
     // planar-convex in practice (OBJ quads); TetGen refines them anyway.
     for (std::size_t k = 1; k + 1 < loop.size(); ++k) surface.triangles.push_back({loop[0], loop[k], loop[k + 1]});
   }
+  return surface;
+}
+
+}  // namespace
+
+SurfaceMesh read_surface_file(const std::string& path, MeshFormat format) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": no such file");
+  if (std::filesystem::file_size(path, ec) == 0) throw InputError(path + ": the file is empty");
+
+  const std::string ext = format == MeshFormat::kUnknown ? lower_extension(path) : extension_of(format);
+  reject_impossible_counts(path, ext);
+  reject_non_finite_text(path, ext);
+  // OpenMesh's readers abort on some malformed files (an OBJ face of no
+  // vertices) and loop on others: they read in a child process, stopped
+  // after a minute.
+  constexpr int kRead = 0, kRefused = 2;
+  ChildOptions read_limit;
+  read_limit.deadline = read_limit.start + std::chrono::minutes(1);
+  const ChildRun run = run_in_child(
+      [&](std::FILE* result) {
+        try {
+          const SurfaceMesh surface = read_with_openmesh(path, ext);
+          const std::uint64_t counts[2] = {surface.positions.size(), surface.triangles.size()};
+          return put_values(result, counts, 2) && put_values(result, surface.positions.data(), counts[0]) &&
+                         put_values(result, surface.triangles.data(), counts[1])
+                     ? kRead
+                     : 1;
+        } catch (const InputError& e) {
+          const std::string what = e.what();
+          return put_values(result, what.data(), what.size()) ? kRefused : 1;
+        }
+      },
+      read_limit);
+  if (run.outcome == ChildRun::Outcome::kTimedOut)
+    throw InputError(path + ": cannot read it as a surface (" + ext + "): the reader did not finish in a minute");
+  if (run.outcome == ChildRun::Outcome::kCrashed)
+    throw InputError(path + ": cannot read it as a surface (" + ext + "): the reader crashed (" +
+                     signal_name(run.code) + ")");
+  if (run.code == kRefused) throw InputError(run.output);
+  SurfaceMesh surface;
+  std::uint64_t counts[2] = {0, 0};
+  std::size_t at = 0;
+  bool read = run.outcome == ChildRun::Outcome::kExited && run.code == kRead && get_values(run.output, at, counts, 2) &&
+              counts[0] <= run.output.size() / sizeof(Vec3) && counts[1] <= run.output.size() / 12;
+  if (read) {
+    surface.positions.resize(counts[0]);
+    surface.triangles.resize(counts[1]);
+    read = get_values(run.output, at, surface.positions.data(), counts[0]) &&
+           get_values(run.output, at, surface.triangles.data(), counts[1]);
+  }
+  if (!read) throw InputError(path + ": cannot read it as a surface (" + ext + ")");
   return surface;
 }
 

@@ -357,7 +357,8 @@ std::optional<SurfaceRepair> repair_in_child(SurfaceMesh& surface, const std::st
   SurfaceRepair report;
   std::uint64_t counts[2] = {0, 0};
   std::size_t at = 0;
-  if (run.code != kRepaired || !get_values(run.output, at, &report, 1) || !get_values(run.output, at, counts, 2))
+  if (run.code != kRepaired || !get_values(run.output, at, &report, 1) || !get_values(run.output, at, counts, 2) ||
+      counts[0] > run.output.size() / sizeof(Vec3) || counts[1] > run.output.size() / 12)
     return std::nullopt;
   SurfaceMesh repaired;
   repaired.positions.resize(counts[0]);

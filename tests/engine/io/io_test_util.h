@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -128,5 +129,24 @@ class FileSizeCap {
   rlimit previous_{};
   void (*previous_handler_)(int) = nullptr;
 };
+
+// A corrupted copy of bytes: cut, bytes overwritten, a run deleted, or a
+// troublesome token inserted.
+inline std::string corrupt(const std::string& bytes, std::mt19937& rng) {
+  std::string d = bytes;
+  const auto at = [&] { return static_cast<std::size_t>(rng() % d.size()); };
+  switch (rng() % 4) {
+    case 0: d.resize(at()); break;
+    case 1:
+      for (unsigned k = 0, n = 1 + rng() % 4; k < n; ++k) d[at()] = static_cast<char>(rng());
+      break;
+    case 2: d.erase(at(), rng() % 20); break;
+    default: {
+      static const char* tokens[] = {"nan", " ", "\n", "-1", "999999", "<", ">", "\"", "=", "$", "0", "1e400", "_"};
+      d.insert(at(), tokens[rng() % 13]);
+    }
+  }
+  return d;
+}
 
 }  // namespace mtcut::engine::test

@@ -110,25 +110,6 @@ TEST(MeshFile, BinaryGarbageIsRejectedByEveryReader) {
     EXPECT_THROW(read_volume_file(dir.write(name, garbage)), InputError) << name;
 }
 
-// A corrupted copy of bytes: cut, bytes overwritten, a run deleted, or a
-// troublesome token inserted.
-std::string corrupt(const std::string& bytes, std::mt19937& rng) {
-  std::string d = bytes;
-  const auto at = [&] { return static_cast<std::size_t>(rng() % d.size()); };
-  switch (rng() % 4) {
-    case 0: d.resize(at()); break;
-    case 1:
-      for (unsigned k = 0, n = 1 + rng() % 4; k < n; ++k) d[at()] = static_cast<char>(rng());
-      break;
-    case 2: d.erase(at(), rng() % 20); break;
-    default: {
-      static const char* tokens[] = {"nan", " ", "\n", "-1", "999999", "<", ">", "\"", "=", "$", "0", "1e400", "_"};
-      d.insert(at(), tokens[rng() % 13]);
-    }
-  }
-  return d;
-}
-
 // Whatever a reader makes of a corrupted file, it either rejects it with an
 // InputError of one line or returns a mesh whose ids and positions are sane;
 // it never crashes, reads out of bounds (ASan) or throws anything else.
@@ -151,7 +132,7 @@ TEST(MeshFile, CorruptedFilesAreRejectedOrReadSanely) {
       // The pair's other file stays intact.
       if (ext == ".node") dir.write("case.ele", test::read_bytes(dir.file("written.ele")));
       if (ext == ".ele") dir.write("case.node", test::read_bytes(dir.file("written.node")));
-      const std::string path = dir.write("case" + ext, corrupt(bytes, rng));
+      const std::string path = dir.write("case" + ext, test::corrupt(bytes, rng));
       try {
         const RawMesh raw = read_volume_file(path);
         const auto n = static_cast<std::int64_t>(raw.positions.size());
