@@ -86,7 +86,7 @@ void register_cut_command(CLI::App& app) {
   cmd->add_option("input", options->input, "builtin:NAME, a surface to mesh, or a tet mesh file (as for `mtcut mesh`)")
       ->required();
   cmd->add_option("--polygon", options->polygon,
-                  "the cut: corners \"x,y,z;x,y,z;...\" (at least 3, in order, planar and convex), in the mesh's units")
+                  "the cut: corners \"x,y,z;x,y,z;...\" (at least 3, in order, planar and convex), in metres (the mesh's coordinates after --units or --scale)")
       ->required();
   cmd->add_option("--scheme", options->scheme, "split scheme: lut (the paper's) or bielser17 (the 1:17 reference)")
       ->capture_default_str();

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "app/material_file.h"
+#include "app/mesh_input_options.h"
 #include "app/toml_table.h"
 #include "engine/builtin_shapes.h"
 #include "engine/input_error.h"
@@ -28,18 +29,17 @@ void read_mesh(TomlTable& t, const std::string& scenario_dir, ScenarioDef& s) {
   // The file's length unit, by name or in metres; everything else in a scenario is in metres.
   if (t.node("units") && t.node("scale")) t.fail(t.node("scale"), "give 'mesh.units' or 'mesh.scale', not both");
   if (auto units = t.string("units")) {
-    const auto metres = engine::metres_per_unit(*units);
-    if (!metres) t.fail(t.node("units"), "'mesh.units' must be \"m\", \"dm\", \"cm\" or \"mm\"");
-    s.mesh_load.metres_per_unit = *metres;
-    s.mesh_load.unit_stated = true;
+    try {
+      set_mesh_units(*units, "'mesh.units'", s.mesh_load);
+    } catch (const engine::InputError& e) {
+      t.fail(t.node("units"), e.what());
+    }
   }
   if (t.node("scale")) {
     t.read("scale", s.mesh_load.metres_per_unit);
     if (!(s.mesh_load.metres_per_unit > 0)) t.fail(t.node("scale"), "'mesh.scale' must be a positive number of metres");
     s.mesh_load.unit_stated = true;
   }
-  if (s.mesh_load.unit_stated && engine::parse_builtin(s.mesh))
-    t.fail(t.node("source"), "a builtin shape is sized in metres ('mesh.size'); units apply to mesh files");
   t.finish();
 }
 

@@ -1,6 +1,8 @@
 #include "engine/child_process.h"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -37,12 +39,27 @@ ChildRun run_in_child(const std::function<int(std::FILE* result)>& work, const C
   if (!result || !chatter) throw InputError("cannot make a temporary file for a child process");
   std::fflush(stdout);
   std::fflush(stderr);
+  // A SIGCHLD the process was started ignoring would reap the child before waitpid sees it.
+  struct sigaction child_default {}, saved_child {};
+  child_default.sa_handler = SIG_DFL;
+  ::sigaction(SIGCHLD, &child_default, &saved_child);
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
-  if (pid < 0) throw InputError("cannot start a child process");
+  if (pid < 0) {
+    ::sigaction(SIGCHLD, &saved_child, nullptr);
+    throw InputError("cannot start a child process");
+  }
   if (pid == 0) {
+    // The child ends with its parent, and takes Ctrl-C as a process does
+    // (not through the parent's handlers, which only set flags).
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(1);
+    ::signal(SIGINT, SIG_DFL);
+    ::signal(SIGTERM, SIG_DFL);
     if (options.quiet) {
-      ::dup2(::fileno(chatter.get()), STDOUT_FILENO);
-      ::dup2(::fileno(chatter.get()), STDERR_FILENO);
+      const int sink = options.keep_chatter ? ::fileno(chatter.get()) : ::open("/dev/null", O_WRONLY);
+      ::dup2(sink, STDOUT_FILENO);
+      ::dup2(sink, STDERR_FILENO);
     }
     int code = 1;
     try {
@@ -65,12 +82,17 @@ ChildRun run_in_child(const std::function<int(std::FILE* result)>& work, const C
   for (auto pause = std::chrono::milliseconds(1);; pause = std::min(2 * pause, std::chrono::milliseconds(50))) {
     const pid_t done = ::waitpid(pid, &status, WNOHANG);
     if (done == pid) break;
-    if (done < 0 && errno != EINTR) throw InputError("lost a child process");
+    if (done < 0 && errno != EINTR) {
+      ::kill(pid, SIGKILL);
+      ::sigaction(SIGCHLD, &saved_child, nullptr);
+      throw InputError("lost a child process");
+    }
     const auto now = Clock::now();
     if (now >= options.deadline) {
       ::kill(pid, SIGKILL);
       while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
       }
+      ::sigaction(SIGCHLD, &saved_child, nullptr);
       run.outcome = ChildRun::Outcome::kTimedOut;
       return run;
     }
@@ -80,6 +102,7 @@ ChildRun run_in_child(const std::function<int(std::FILE* result)>& work, const C
     }
     std::this_thread::sleep_for(pause);
   }
+  ::sigaction(SIGCHLD, &saved_child, nullptr);
   run.chatter = read_all(chatter.get());
   if (WIFSIGNALED(status)) {
     run.outcome = ChildRun::Outcome::kCrashed;

@@ -22,7 +22,8 @@ struct ChildRun {
 
 struct ChildOptions {
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
-  bool quiet = true;  // the child's stdout and stderr go to ChildRun::chatter
+  bool quiet = true;         // the child's stdout and stderr go to ChildRun::chatter ...
+  bool keep_chatter = true;  // ... or, when false, nowhere (a reader that loops printing)
   // Called about once a second while the child runs, with the seconds since `start`.
   std::function<void(double seconds)> progress;
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();

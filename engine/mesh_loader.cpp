@@ -55,9 +55,10 @@ TetMesh mesh_surface(SurfaceMesh surface, const MeshLoadDef& def, const std::str
     TetMesh mesh = tetrahedralize(surface, def.meshing, spec, &notes);
     if (repair.changed()) notes.push_back(repair.describe(spec));
     return mesh;
-  } catch (const InputError&) {
-    // What TetGen still refuses (faces closer than its tolerance, a crossing
-    // CGAL's check missed) is wrapped whole.
+  } catch (const SurfaceRefused&) {
+    // What TetGen still refuses for its geometry (faces closer than its
+    // tolerance, a crossing CGAL's check missed) is wrapped whole; a limit
+    // it ran into (time, memory) is not retried.
     if (repair.step == SurfaceRepair::Step::kWrap) throw;
     surface = input;
     const SurfaceRepair wrapped = repair_surface(surface, spec, true);
@@ -163,7 +164,7 @@ LoadedMesh load_mesh(const std::string& spec, const MeshLoadDef& def) {
   LoadedMesh loaded;
   if (const auto shape = parse_builtin(spec)) {
     if (def.metres_per_unit != 1.0)
-      throw InputError(spec + ": a builtin shape is sized in metres (--size); a unit applies to mesh files");
+      throw InputError(spec + ": a builtin shape is sized in metres; a unit applies to mesh files only");
     BuiltinShapeDef shape_def;
     shape_def.shape = *shape;
     shape_def.size = def.builtin_size;

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <sstream>
 #include <map>
+#include <set>
 #include <unordered_map>
 
 #include "engine/atomic_file.h"
@@ -65,19 +66,50 @@ void reject_impossible_counts(const std::string& path, const std::string& ext) {
                      " bytes can hold");
   };
   if (ext == ".ply") {
+    // A damaged PLY header also sends OpenMesh's reader into a loop: the
+    // header must be one OpenMesh reads as written.
+    static const std::set<std::string> kTypes = {"char",  "uchar",  "short",  "ushort", "int",     "uint",
+                                                 "float", "double", "int8",   "uint8",  "int16",   "uint16",
+                                                 "int32", "uint32", "float32", "float64"};
+    const auto bad_header = [&](int line_number) {
+      throw InputError(describe_at(path, static_cast<std::size_t>(line_number), "not a PLY header line"));
+    };
     std::string line, format;
     double needed = 0;
-    for (int n = 0; n < 200 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++n) {
+    bool ended = false;
+    for (int n = 1; n <= 500 && std::getline(in, line); ++n) {
+      if (!line.empty() && line.back() == '\r') line.pop_back();
       std::istringstream words(line);
-      std::string key, element;
-      double count = 0;
+      std::string key, a, b, c, d;
       words >> key;
-      if (key == "format") words >> format;
-      if (key == "element" && words >> element >> count) {
-        if (!(count >= 0)) refuse("its header declares a negative count");
-        needed += count * (element == "vertex" ? (format == "ascii" ? 6 : 12) : (format == "ascii" ? 8 : 13));
+      if (n == 1) {
+        if (key != "ply" || words >> a) bad_header(n);
+        continue;
+      }
+      if (key == "end_header") {
+        ended = true;
+        break;
+      }
+      if (key == "comment" || key == "obj_info") continue;
+      if (key == "format") {
+        if (!(words >> format >> a) || (format != "ascii" && format != "binary_little_endian" &&
+                                        format != "binary_big_endian"))
+          bad_header(n);
+      } else if (key == "element") {
+        if (!(words >> a >> b) || b.empty() || b.find_first_not_of("0123456789") != std::string::npos || b.size() > 12)
+          bad_header(n);
+        needed += std::stod(b) * (a == "vertex" ? (format == "ascii" ? 6 : 12) : (format == "ascii" ? 2 : 1));
+      } else if (key == "property") {
+        // "property TYPE NAME" or "property list COUNT_TYPE ITEM_TYPE NAME".
+        if (!(words >> a >> b)) bad_header(n);
+        if (a == "list" ? !(words >> c >> d) || !kTypes.count(b) || !kTypes.count(c) : !kTypes.count(a)) bad_header(n);
+        std::string more;
+        if (words >> more) bad_header(n);
+      } else {
+        bad_header(n);
       }
     }
+    if (!ended) throw InputError(path + ": the PLY header has no end_header line");
     if (needed > size) refuse("its header declares " + std::to_string(static_cast<long long>(needed)) + " bytes of elements");
   } else if (ext == ".off") {
     std::string header;
@@ -188,16 +220,14 @@ bool is_surface_file(const std::string& path) { return is_surface_format(format_
 
 namespace {
 
-// Reads the surface with OpenMesh (in the process it is called in).
-SurfaceMesh read_with_openmesh(const std::string& path, const std::string& ext) {
+// Reads the surface at `read_path` with OpenMesh (in the process it is
+// called in); `path` names it in errors.
+SurfaceMesh read_with_openmesh(const std::string& path, const std::string& read_path, const std::string& ext) {
   OmMesh om;
   {
     QuietOpenMesh quiet;
     OpenMesh::IO::Options options;
-    // OpenMesh picks its reader by the name's extension: a file whose
-    // extension is not its format's is read through a link that has it.
-    const ExtensionLink link(path, ext);
-    if (!OpenMesh::IO::read_mesh(om, link.path(), options))
+    if (!OpenMesh::IO::read_mesh(om, read_path, options))
       throw InputError(path + ": cannot read it as a surface (" + ext + ")");
   }
   if (om.n_faces() == 0) throw InputError(path + ": the surface has no faces");
@@ -236,15 +266,21 @@ SurfaceMesh read_surface_file(const std::string& path, MeshFormat format) {
   reject_impossible_counts(path, ext);
   reject_non_finite_text(path, ext);
   // OpenMesh's readers abort on some malformed files (an OBJ face of no
-  // vertices) and loop on others: they read in a child process, stopped
-  // after a minute.
+  // vertices) and loop on others (a damaged PLY header): they read in a
+  // child process, stopped after kReadSeconds.
+  constexpr int kReadSeconds = 10;
+  // OpenMesh picks its reader by the name's extension: a file whose
+  // extension is not its format's is read through a link that has it (made
+  // and removed here, whatever becomes of the child).
+  const ExtensionLink link(path, ext);
   constexpr int kRead = 0, kRefused = 2;
   ChildOptions read_limit;
-  read_limit.deadline = read_limit.start + std::chrono::minutes(1);
+  read_limit.deadline = read_limit.start + std::chrono::seconds(kReadSeconds);
+  read_limit.keep_chatter = false;
   const ChildRun run = run_in_child(
       [&](std::FILE* result) {
         try {
-          const SurfaceMesh surface = read_with_openmesh(path, ext);
+          const SurfaceMesh surface = read_with_openmesh(path, link.path(), ext);
           const std::uint64_t counts[2] = {surface.positions.size(), surface.triangles.size()};
           return put_values(result, counts, 2) && put_values(result, surface.positions.data(), counts[0]) &&
                          put_values(result, surface.triangles.data(), counts[1])
@@ -257,7 +293,8 @@ SurfaceMesh read_surface_file(const std::string& path, MeshFormat format) {
       },
       read_limit);
   if (run.outcome == ChildRun::Outcome::kTimedOut)
-    throw InputError(path + ": cannot read it as a surface (" + ext + "): the reader did not finish in a minute");
+    throw InputError(path + ": cannot read it as a surface (" + ext + "): the reader did not finish in " +
+                     std::to_string(kReadSeconds) + " s");
   if (run.outcome == ChildRun::Outcome::kCrashed)
     throw InputError(path + ": cannot read it as a surface (" + ext + "): the reader crashed (" +
                      signal_name(run.code) + ")");

@@ -207,7 +207,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& 
   using Clock = std::chrono::steady_clock;
   if (surface.triangles.size() < 4) throw InputError(source + ": the surface has fewer than 4 faces");
   if (const std::size_t open = surface.count_open_edges(); open > 0)
-    throw InputError(source + ": the surface is not closed (" + std::to_string(open) +
+    throw SurfaceRefused(source + ": the surface is not closed (" + std::to_string(open) +
                      " edges are not shared by exactly two faces: a hole or a non-manifold seam)");
   if (options.max_volume < 0 || options.radius_edge_ratio < 0)
     throw InputError(source + ": max volume and quality bound must not be negative");
@@ -219,15 +219,16 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& 
   switch (check.outcome) {
     case TetgenRun::Outcome::kDone: break;
     case TetgenRun::Outcome::kTetgenError:
-      throw InputError(source + ": the surface intersects itself or is degenerate (TetGen's detection failed)");
+      throw SurfaceRefused(source + ": the surface intersects itself or is degenerate (TetGen's detection failed)");
     case TetgenRun::Outcome::kCrashed:
-      throw InputError(source + ": TetGen crashed (" + signal_name(check.code) + ") checking the surface for self-intersections");
+      throw SurfaceRefused(source + ": TetGen crashed (" + signal_name(check.code) +
+                           ") checking the surface for self-intersections");
     case TetgenRun::Outcome::kTimedOut:
       throw InputError(source + ": TetGen did not finish checking the surface within " +
                        format_seconds(options.time_limit_seconds));
   }
   if (const std::string fault = self_intersections(surface, check); !fault.empty())
-    throw InputError(source + ": " + fault);
+    throw SurfaceRefused(source + ": " + fault);
 
   // The quality asked for, then a looser bound (kept even if it too stops
   // at the points' bound), then, after a crash, none; each try runs until
@@ -243,14 +244,18 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& 
     none.radius_edge_ratio = 0;
     tries.push_back(none);
   }
-  std::string why;  // why the last try was not kept
+  std::string why;         // why the last try was not kept
+  bool timed_out = false;  // the last try ran out of time
   for (std::size_t i = 0; i < tries.size(); ++i) {
     constexpr double kShare[] = {0.6, 0.85, 1.0};  // of the time limit, by the end of each try
     const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                       limit * (i + 1 == tries.size() ? 1.0 : kShare[i]));
     TetgenRun run = run_tetgen(surface, switches_for(tries[i], false) + "S" + std::to_string(bound), tries[i],
                                deadline, start);
-    if (run.outcome == TetgenRun::Outcome::kTetgenError) throw InputError(source + ": " + tetgen_fault(run.code, run.chatter));
+    if (run.outcome == TetgenRun::Outcome::kTetgenError) {
+      if (run.code == 1) throw InputError(source + ": " + tetgen_fault(run.code, run.chatter));  // out of memory
+      throw SurfaceRefused(source + ": " + tetgen_fault(run.code, run.chatter));
+    }
     if (run.outcome == TetgenRun::Outcome::kDone && run.tets.empty())
       throw InputError(source + ": TetGen produced no tetrahedra");
     const long added = static_cast<long>(run.positions.size()) - static_cast<long>(surface.positions.size());
@@ -262,12 +267,14 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& 
                                    : std::string("no quality refinement");
       if (notes && i > 0 && !at_bound) notes->push_back(source + ": TetGen " + why + "; meshed with " + kept + " instead");
       if (notes && i > 0 && at_bound)
-        notes->push_back(source + ": TetGen " + why + "; with " + kept +
-                         " it reached the bound too, and that mesh is kept: its quality is below what was asked for");
+        notes->push_back(source + ": TetGen " + why + "; with " + kept + " it reached its bound of " +
+                         std::to_string(bound) +
+                         " added points, and that mesh is kept: its quality is below what was asked for");
       if (notes && i == 0 && at_bound)
         notes->push_back(source + ": TetGen stopped at its bound of " + std::to_string(bound) + " added points");
       return make_tet_mesh(std::move(run.positions), run.tets, source);
     }
+    timed_out = run.outcome == TetgenRun::Outcome::kTimedOut;
     switch (run.outcome) {
       case TetgenRun::Outcome::kDone: why = "reached its bound of " + std::to_string(bound) + " added points"; break;
       case TetgenRun::Outcome::kCrashed: why = "crashed (" + signal_name(run.code) + ") refining the mesh"; break;
@@ -277,7 +284,8 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& 
       case TetgenRun::Outcome::kTetgenError: break;
     }
   }
-  throw InputError(source + ": TetGen " + why + ", also without quality refinement");
+  if (timed_out) throw InputError(source + ": TetGen " + why);
+  throw SurfaceRefused(source + ": TetGen " + why + ", also without quality refinement");
 }
 
 }  // namespace mtcut::engine

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/input_error.h"
 #include "engine/surface_mesh.h"
 #include "engine/tet_mesh.h"
 
@@ -29,14 +30,23 @@ struct TetrahedralizeOptions {
   std::function<void(double seconds)> progress;
 };
 
+// What TetGen refuses for the surface's geometry (it crosses itself, faces
+// too close or too small for its tolerance, a crash on it), as against a
+// limit it ran into (time, memory) or bad options, which stay InputError.
+class SurfaceRefused : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 // The most points TetGen may add to `surface` (TetGen -S): generous for the
 // tets max_volume asks for and for quality refinement near the surface.
 long steiner_point_bound(const SurfaceMesh& surface, const TetrahedralizeOptions& options);
 
 // Meshes the inside of `surface`. `source` names the input in error
 // messages and notes; `notes`, when given, receives a line for a retry with
-// looser quality. Throws InputError for open, self-intersecting or
-// degenerate surfaces, and for a TetGen that crashes or overruns the time limit.
+// looser quality. Throws SurfaceRefused for open, self-intersecting or
+// degenerate surfaces and for a TetGen that crashes on them, and
+// InputError for a TetGen that overruns the time limit or memory.
 TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& options, const std::string& source,
                        std::vector<std::string>* notes = nullptr);
 

@@ -189,12 +189,12 @@ TEST_F(RunCommand, BadScenariosGiveOneLineWithFileAndLine) {
 // shape; a mesh too large for the spring model names the units to give.
 TEST_F(RunCommand, MeshUnitsAreCheckedAndAMeshInMillimetresIsToldWhatToSay) {
   const std::string builtin = "source = \"builtin:ellipsoid\"";
-  expect_rejected(variant(builtin, builtin + "\nunits = \"mm\""), "units apply to mesh files");
+  expect_rejected(variant(builtin, builtin + "\nunits = \"mm\""), "a unit applies to mesh files only");
   const CommandResult made = run_mtcut("mesh builtin:ellipsoid --tets 2000 --size 0.12,0.08,0.06 -o " +
                                        quoted(path("organ.obj")));
   ASSERT_EQ(made.exit_code, 0) << made.err;
   const std::string organ = "source = \"" + path("organ.obj") + "\"";
-  expect_rejected(variant(builtin, organ + "\nunits = \"parsec\""), "'mesh.units' must be");
+  expect_rejected(variant(builtin, organ + "\nunits = \"parsec\""), "'mesh.units' 'parsec': unknown unit");
   expect_rejected(variant(builtin, organ + "\nunits = \"m\"\nscale = 1.0"), "not both");
   expect_rejected(variant(builtin, organ + "\nscale = -1.0"), "'mesh.scale' must be a positive");
   // The organ in millimetres, read as metres, is beyond the spring model.
@@ -247,6 +247,51 @@ engaged = true
   EXPECT_EQ(out["nan_events"].get<int>(), 0);
   EXPECT_GT(out["tets_total"].get<int>(), 12);  // the cut split tets
   EXPECT_EQ(out["pieces"].get<int>(), 3) << out.dump();  // the first cube in two, and the second
+}
+
+// A surface of two organs that cross each other is repaired into their
+// union (one line says so), meshed, and cut through by the default stroke.
+TEST_F(RunCommand, ASurfaceThatCrossesItselfIsRepairedAndCut) {
+  const std::string organ = path("organ.obj");
+  ASSERT_EQ(run_mtcut("mesh builtin:ellipsoid --tets 3000 --size 0.16,0.1,0.07 -o " + quoted(organ)).exit_code, 0);
+  // The organ twice, the second moved 3 cm along x and 1 cm along y and z.
+  std::istringstream lines(read_text(organ));
+  std::string line, points, faces, moved;
+  int count = 0;
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string tag;
+    words >> tag;
+    if (tag == "v") {
+      double x = 0, y = 0, z = 0;
+      words >> x >> y >> z;
+      points += line + "\n";
+      moved += "v " + std::to_string(x + 0.03) + " " + std::to_string(y + 0.01) + " " + std::to_string(z + 0.01) + "\n";
+      ++count;
+    } else if (tag == "f") {
+      faces += line + "\n";
+    }
+  }
+  std::string shifted;
+  std::istringstream face_lines(faces);
+  while (std::getline(face_lines, line)) {
+    std::istringstream words(line.substr(1));
+    std::string corner;
+    shifted += "f";
+    while (words >> corner) shifted += " " + std::to_string(std::stoi(corner) + count);
+    shifted += "\n";
+  }
+  const std::string two = write("two.obj", points + moved + faces + shifted);
+  const std::string scenario = write("two.toml", variant("source = \"builtin:ellipsoid\"", "source = \"" + two + "\""));
+  const CommandResult r = run_mtcut("run " + quoted(scenario) + " --frames 70 --json --out " + quoted(path("out")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("two.obj: repaired (self-intersections resolved)"), std::string::npos) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(out["valid"].get<bool>()) << out.dump();
+  EXPECT_EQ(out["nan_events"].get<int>(), 0);
+  EXPECT_EQ(out["cuts_refused"].get<int>(), 0);
+  EXPECT_FALSE(out["first_cut_frame"].is_null());
+  EXPECT_EQ(out["pieces"].get<int>(), 2) << out.dump();  // the stroke cuts the union through
 }
 
 // An end state that fails validation names the first failing check.
