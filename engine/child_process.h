@@ -32,7 +32,17 @@ struct ChildOptions {
 // Runs work(result) in a forked child, whose return value is its exit code,
 // and waits for it, killing it at the deadline. Throws InputError when no
 // child can be started.
+//
+// A process that runs other threads is not forked: the child of such a
+// process may only call async-signal-safe functions (a lock another thread
+// held at the fork, in the allocator for instance, stays held in the child
+// for ever). There the work runs in the calling thread, without the
+// deadline, the crash isolation or the quiet. The commands load their meshes
+// before they start threads, so they keep all three.
 ChildRun run_in_child(const std::function<int(std::FILE* result)>& work, const ChildOptions& options);
+
+// Whether a fork now would copy a process that runs more than this thread.
+bool process_runs_other_threads();
 
 // "Aborted", "Segmentation fault", ...
 std::string signal_name(int signal);

@@ -280,12 +280,7 @@ SurfaceMesh read_surface_file(const std::string& path, MeshFormat format) {
   const ChildRun run = run_in_child(
       [&](std::FILE* result) {
         try {
-          const SurfaceMesh surface = read_with_openmesh(path, link.path(), ext);
-          const std::uint64_t counts[2] = {surface.positions.size(), surface.triangles.size()};
-          return put_values(result, counts, 2) && put_values(result, surface.positions.data(), counts[0]) &&
-                         put_values(result, surface.triangles.data(), counts[1])
-                     ? kRead
-                     : 1;
+          return put_surface(result, read_with_openmesh(path, link.path(), ext)) ? kRead : 1;
         } catch (const InputError& e) {
           const std::string what = e.what();
           return put_values(result, what.data(), what.size()) ? kRefused : 1;
@@ -300,18 +295,28 @@ SurfaceMesh read_surface_file(const std::string& path, MeshFormat format) {
                      signal_name(run.code) + ")");
   if (run.code == kRefused) throw InputError(run.output);
   SurfaceMesh surface;
-  std::uint64_t counts[2] = {0, 0};
   std::size_t at = 0;
-  bool read = run.outcome == ChildRun::Outcome::kExited && run.code == kRead && get_values(run.output, at, counts, 2) &&
-              counts[0] <= run.output.size() / sizeof(Vec3) && counts[1] <= run.output.size() / 12;
-  if (read) {
-    surface.positions.resize(counts[0]);
-    surface.triangles.resize(counts[1]);
-    read = get_values(run.output, at, surface.positions.data(), counts[0]) &&
-           get_values(run.output, at, surface.triangles.data(), counts[1]);
-  }
-  if (!read) throw InputError(path + ": cannot read it as a surface (" + ext + ")");
+  if (run.outcome != ChildRun::Outcome::kExited || run.code != kRead || !get_surface(run.output, at, surface))
+    throw InputError(path + ": cannot read it as a surface (" + ext + ")");
   return surface;
+}
+
+bool put_surface(std::FILE* result, const SurfaceMesh& surface) {
+  const std::uint64_t counts[2] = {surface.positions.size(), surface.triangles.size()};
+  return put_values(result, counts, 2) && put_values(result, surface.positions.data(), counts[0]) &&
+         put_values(result, surface.triangles.data(), counts[1]);
+}
+
+bool get_surface(const std::string& result, std::size_t& at, SurfaceMesh& surface) {
+  std::uint64_t counts[2] = {0, 0};
+  // Counts beyond what the result holds are refused before anything is allocated for them.
+  if (!get_values(result, at, counts, 2) || counts[0] > result.size() / sizeof(Vec3) ||
+      counts[1] > result.size() / sizeof(surface.triangles[0]))
+    return false;
+  surface.positions.resize(counts[0]);
+  surface.triangles.resize(counts[1]);
+  return get_values(result, at, surface.positions.data(), counts[0]) &&
+         get_values(result, at, surface.triangles.data(), counts[1]);
 }
 
 void write_surface_file(const SurfaceMesh& surface, const std::string& path) {

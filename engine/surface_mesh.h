@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,12 @@ SurfaceMesh read_surface_file(const std::string& path, MeshFormat format = MeshF
 // Writes a surface (format from the extension: .obj .off .stl .ply) through
 // OpenMesh, atomically. Throws InputError when the path cannot be written.
 void write_surface_file(const SurfaceMesh& surface, const std::string& path);
+
+// A surface in a child process's result (engine/child_process.h): written
+// by the child, read back by the parent at `at`, which moves on. get_surface
+// is false for a result too short for the counts it gives.
+bool put_surface(std::FILE* result, const SurfaceMesh& surface);
+bool get_surface(const std::string& result, std::size_t& at, SurfaceMesh& surface);
 
 // The boundary of a tet mesh as a surface over the same vertex ids compacted.
 SurfaceMesh extract_boundary(const TetMesh& mesh);

@@ -340,12 +340,7 @@ std::optional<SurfaceRepair> repair_in_child(SurfaceMesh& surface, const std::st
         try {
           SurfaceMesh repaired = surface;
           const SurfaceRepair report = repair_steps(repaired, source, wrap);
-          const std::uint64_t counts[2] = {repaired.positions.size(), repaired.triangles.size()};
-          return put_values(result, &report, 1) && put_values(result, counts, 2) &&
-                         put_values(result, repaired.positions.data(), repaired.positions.size()) &&
-                         put_values(result, repaired.triangles.data(), repaired.triangles.size())
-                     ? kRepaired
-                     : 1;
+          return put_values(result, &report, 1) && put_surface(result, repaired) ? kRepaired : 1;
         } catch (const InputError& e) {
           const std::string what = e.what();
           return put_values(result, what.data(), what.size()) ? kRefused : 1;
@@ -355,16 +350,9 @@ std::optional<SurfaceRepair> repair_in_child(SurfaceMesh& surface, const std::st
   if (run.outcome != ChildRun::Outcome::kExited) return std::nullopt;
   if (run.code == kRefused) throw InputError(run.output);
   SurfaceRepair report;
-  std::uint64_t counts[2] = {0, 0};
-  std::size_t at = 0;
-  if (run.code != kRepaired || !get_values(run.output, at, &report, 1) || !get_values(run.output, at, counts, 2) ||
-      counts[0] > run.output.size() / sizeof(Vec3) || counts[1] > run.output.size() / 12)
-    return std::nullopt;
   SurfaceMesh repaired;
-  repaired.positions.resize(counts[0]);
-  repaired.triangles.resize(counts[1]);
-  if (!get_values(run.output, at, repaired.positions.data(), repaired.positions.size()) ||
-      !get_values(run.output, at, repaired.triangles.data(), repaired.triangles.size()))
+  std::size_t at = 0;
+  if (run.code != kRepaired || !get_values(run.output, at, &report, 1) || !get_surface(run.output, at, repaired))
     return std::nullopt;
   surface = std::move(repaired);
   return report;

@@ -25,16 +25,27 @@ class RunCommand : public RunFixture {
     EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
+
+  // `mtcut run ARGS --json --out OUT`: its summary, once checked that it
+  // exited 0, ends valid and met no NaN; `err` receives what it printed on
+  // stderr. An empty object when the run failed: the figures a test then
+  // reads are null, and reading them fails it.
+  nlohmann::json expect_valid_run(const std::string& args, const std::string& out_dir, std::string* err = nullptr) {
+    const CommandResult r = run_mtcut("run " + args + " --json --out " + quoted(out_dir));
+    if (err) *err = r.err;
+    EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+    if (r.exit_code != 0) return nlohmann::json::object();
+    nlohmann::json out = nlohmann::json::parse(r.out);
+    EXPECT_TRUE(out.value("valid", false)) << args << "\n" << out.dump(1);
+    EXPECT_EQ(out.value("nan_events", -1), 0) << args;
+    return out;
+  }
 };
 
 TEST_F(RunCommand, DefaultScenarioRunsValidAndWritesItsSummary) {
   const std::string summary = path("summary.json");
-  const CommandResult r = run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) + " --frames 30" +
-                                    " --json --out " + quoted(path("out")) + " --summary " + quoted(summary));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto out = nlohmann::json::parse(r.out);
-  EXPECT_TRUE(out["valid"].get<bool>());
-  EXPECT_EQ(out["nan_events"].get<int>(), 0);
+  nlohmann::json out = expect_valid_run(
+      quoted(source_path("config/scenarios/default.toml")) + " --frames 30 --summary " + quoted(summary), path("out"));
   EXPECT_EQ(out["frames"].get<int>(), 30);
   EXPECT_EQ(nlohmann::json::parse(read_text(summary)), out);
   EXPECT_EQ(nlohmann::json::parse(read_text(path("out/summary.json"))), out);
@@ -127,12 +138,7 @@ constexpr const char* kDefaultScenarioGoldenHash = "49b54fc5798d3934";
 // carried to rest space once left it in one piece with every test passing.)
 TEST_F(RunCommand, TheStressAndLiverScenariosRunValid) {
   for (const std::string name : {"stress", "liver"}) {
-    const CommandResult r = run_mtcut("run " + quoted(source_path("config/scenarios/" + name + ".toml")) +
-                                      " --json --out " + quoted(path(name)));
-    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
-    const auto out = nlohmann::json::parse(r.out);
-    EXPECT_TRUE(out["valid"].get<bool>()) << name;
-    EXPECT_EQ(out["nan_events"].get<int>(), 0) << name;
+    nlohmann::json out = expect_valid_run(quoted(source_path("config/scenarios/" + name + ".toml")), path(name));
     EXPECT_EQ(out["cuts_refused"].get<int>(), 0) << name;
     EXPECT_FALSE(out["first_cut_frame"].is_null()) << name << ": nothing was cut";
     if (name == "stress") {
@@ -142,12 +148,7 @@ TEST_F(RunCommand, TheStressAndLiverScenariosRunValid) {
 }
 
 TEST_F(RunCommand, DefaultScenarioCutsAFlapThatSettlesOnTheFloorWithTheGoldenHash) {
-  const CommandResult r = run_mtcut("run " + quoted(source_path("config/scenarios/default.toml")) + " --json --out " +
-                                    quoted(path("out")));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto out = nlohmann::json::parse(r.out);
-  EXPECT_TRUE(out["valid"].get<bool>()) << out.dump(1);
-  EXPECT_EQ(out["nan_events"].get<int>(), 0);
+  nlohmann::json out = expect_valid_run(quoted(source_path("config/scenarios/default.toml")), path("out"));
   ASSERT_EQ(out["pieces"].get<int>(), 2);
   const auto& pieces = out["piece_details"];
   ASSERT_EQ(pieces.size(), 2u);
@@ -239,12 +240,9 @@ engaged = true
   ASSERT_NE(floor, std::string::npos);
   scenario.replace(floor, std::string("floor_height = -0.036").size(), "floor_height = -0.001");
   const std::string file = write("cubes.toml", scenario);
-  const CommandResult r = run_mtcut("run " + quoted(file) + " --frames 40 --json --out " + quoted(path("out")));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("parts of the mesh touch only at 2 vertices"), std::string::npos) << r.err;
-  const auto out = nlohmann::json::parse(r.out);
-  EXPECT_TRUE(out["valid"].get<bool>()) << out.dump();
-  EXPECT_EQ(out["nan_events"].get<int>(), 0);
+  std::string err;
+  nlohmann::json out = expect_valid_run(quoted(file) + " --frames 40", path("out"), &err);
+  EXPECT_NE(err.find("parts of the mesh touch only at 2 vertices"), std::string::npos) << err;
   EXPECT_GT(out["tets_total"].get<int>(), 12);  // the cut split tets
   EXPECT_EQ(out["pieces"].get<int>(), 3) << out.dump();  // the first cube in two, and the second
 }
@@ -283,12 +281,9 @@ TEST_F(RunCommand, ASurfaceThatCrossesItselfIsRepairedAndCut) {
   }
   const std::string two = write("two.obj", points + moved + faces + shifted);
   const std::string scenario = write("two.toml", variant("source = \"builtin:ellipsoid\"", "source = \"" + two + "\""));
-  const CommandResult r = run_mtcut("run " + quoted(scenario) + " --frames 70 --json --out " + quoted(path("out")));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("two.obj: repaired (self-intersections resolved)"), std::string::npos) << r.err;
-  const auto out = nlohmann::json::parse(r.out);
-  EXPECT_TRUE(out["valid"].get<bool>()) << out.dump();
-  EXPECT_EQ(out["nan_events"].get<int>(), 0);
+  std::string err;
+  nlohmann::json out = expect_valid_run(quoted(scenario) + " --frames 70", path("out"), &err);
+  EXPECT_NE(err.find("two.obj: repaired (self-intersections resolved)"), std::string::npos) << err;
   EXPECT_EQ(out["cuts_refused"].get<int>(), 0);
   EXPECT_FALSE(out["first_cut_frame"].is_null());
   EXPECT_EQ(out["pieces"].get<int>(), 2) << out.dump();  // the stroke cuts the union through
