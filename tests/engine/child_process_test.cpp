@@ -5,6 +5,7 @@
 
 #include <condition_variable>
 #include <csignal>
+#include <cstdlib>
 #include <mutex>
 #include <thread>
 
@@ -58,11 +59,12 @@ TEST(ChildProcess, TheWorkRunsInAnotherProcessAndItsResultComesBack) {
   EXPECT_FALSE(get_values(run.output, at, &value, 1)) << "nothing more was written";
 }
 
+// (An abort, not a fault: the sanitizers' builds catch faults themselves.)
 TEST(ChildProcess, ACrashIsReportedWithItsSignal) {
-  const ChildRun run = run_in_child([](std::FILE*) -> int { std::raise(SIGSEGV); return 0; }, {});
+  const ChildRun run = run_in_child([](std::FILE*) -> int { std::abort(); }, {});
   ASSERT_EQ(run.outcome, ChildRun::Outcome::kCrashed);
-  EXPECT_EQ(run.code, SIGSEGV);
-  EXPECT_EQ(signal_name(run.code), "Segmentation fault");
+  EXPECT_EQ(run.code, SIGABRT);
+  EXPECT_EQ(signal_name(run.code), "Aborted");
 }
 
 TEST(ChildProcess, AChildPastItsDeadlineIsStopped) {
