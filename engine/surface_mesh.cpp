@@ -133,6 +133,11 @@ void reject_impossible_counts(const std::string& path, const std::string& ext) {
 // at "nan" or "inf" and silently drops or shifts vertices. Scan ascii files
 // first and name the line of any non-finite number. Binary files need no
 // scan: their NaNs arrive as values and are caught after reading.
+//
+// Its OBJ reader also skips a record it does not know and keeps going: a
+// damaged vertex line ("v*-0.8 ...", "v 0.1 0.2") is dropped and every face
+// after it then points at the wrong vertices. An OBJ's vertex records must
+// hold three numbers, and its faces' corners vertices it has.
 void reject_non_finite_text(const std::string& path, const std::string& ext) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
@@ -147,18 +152,46 @@ void reject_non_finite_text(const std::string& path, const std::string& ext) {
   if (!ascii) return;
   in.clear();
   in.seekg(0);
+  const bool obj = ext == ".obj";
   std::size_t number = 0;
+  long long vertices = 0, last_corner = 0;
+  std::size_t last_corner_line = 0;
   while (std::getline(in, line)) {
     ++number;
     std::istringstream tokens(line);
-    std::string token;
+    std::string token, record;
+    int numbers = 0;
+    bool first = true;
     while (tokens >> token) {
+      if (first) record = token;
       char* end = nullptr;
       const double value = std::strtod(token.c_str(), &end);
-      if (end != token.c_str() && *end == '\0' && !std::isfinite(value))
+      const bool is_number = end != token.c_str() && *end == '\0';
+      if (is_number && !std::isfinite(value))
         throw InputError(describe_at(path, number, "non-finite coordinate '" + token + "'"));
+      if (obj && !first && record == "v" && numbers < 3 && !is_number)
+        throw InputError(describe_at(path, number, "vertex coordinate '" + token + "' is not a number"));
+      if (obj && !first && record == "f") {
+        // "i", "i/t", "i//n" or "i/t/n": i counts from 1, or back from the last vertex when negative.
+        const long long corner = std::strtoll(token.c_str(), &end, 10);
+        if (end == token.c_str() || (*end != '\0' && *end != '/') || corner == 0 || corner < -vertices)
+          throw InputError(describe_at(path, number, "face corner '" + token + "' is not a vertex of the file"));
+        if (corner > last_corner) last_corner = corner, last_corner_line = number;
+      }
+      numbers += is_number && !first;
+      first = false;
+    }
+    if (!obj || record.empty() || record[0] != 'v') continue;
+    if (record == "v") {
+      if (numbers < 3) throw InputError(describe_at(path, number, "a vertex with fewer than three coordinates"));
+      ++vertices;
+    } else if (record != "vt" && record != "vn" && record != "vp") {
+      throw InputError(describe_at(path, number, "'" + record + "' is not an OBJ record"));
     }
   }
+  if (last_corner > vertices)
+    throw InputError(describe_at(path, last_corner_line, "a face corner is vertex " + std::to_string(last_corner) +
+                                                             " of a file of " + std::to_string(vertices)));
 }
 
 std::string extension_of(MeshFormat format) {

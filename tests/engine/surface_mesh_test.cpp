@@ -78,6 +78,37 @@ TEST_F(SurfaceFiles, BadFilesGiveOneClearLine) {
   EXPECT_NE(input_error_of([&] { read_surface_file(nofaces); }).find("no faces"), std::string::npos);
 }
 
+// A damaged OBJ record is named, not skipped: the faces after a dropped
+// vertex would point at the wrong vertices.
+TEST_F(SurfaceFiles, DamagedObjRecordsAreNamedWithTheirLine) {
+  const std::string faces = "f 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n";
+  const auto error_of = [&](const std::string& name, const std::string& text) {
+    return input_error_of([&] { read_surface_file(write(name, text)); });
+  };
+  std::string m = error_of("glued.obj", "v 0 0 0\nv*-0.8 1 0 0\nv 0 1 0\nv 0 0 1\n" + faces);
+  EXPECT_NE(m.find("glued.obj: line 2: 'v*-0.8' is not an OBJ record"), std::string::npos) << m;
+  m = error_of("short.obj", "v 0 0 0\nv 1 0 0\nv 0 1\nv 0 0 1\n" + faces);
+  EXPECT_NE(m.find("short.obj: line 3: a vertex with fewer than three coordinates"), std::string::npos) << m;
+  m = error_of("word.obj", "v 0 0 0\nv 1 x 0\nv 0 1 0\nv 0 0 1\n" + faces);
+  EXPECT_NE(m.find("word.obj: line 2: vertex coordinate 'x' is not a number"), std::string::npos) << m;
+  m = error_of("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 0 2 3\n" + faces);
+  EXPECT_NE(m.find("zero.obj: line 5: face corner '0' is not a vertex of the file"), std::string::npos) << m;
+  m = error_of("back.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf -1 -2 -5\n" + faces);
+  EXPECT_NE(m.find("back.obj: line 5: face corner '-5'"), std::string::npos) << m;
+  m = error_of("beyond.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n" + faces + "f 1 2 9/1/1\n");
+  EXPECT_NE(m.find("beyond.obj: line 9: a face corner is vertex 9 of a file of 4"), std::string::npos) << m;
+  // What an OBJ may hold besides: colours after a vertex, texture and normal
+  // records, relative and slashed corners, groups, comments, CRLF ends.
+  const SurfaceMesh fine = read_surface_file(
+      write("fine.obj",
+            "# a tetrahedron\r\nmtllib t.mtl\r\no t\r\nv 0 0 0 1 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv 0 0 1\r\n"
+            "vt 0 0\r\nvn 0 0 1\r\ng side\r\ns off\r\nf 1/1/1 3/1/1 2/1/1\r\nf 1//1 2//1 4//1\r\n"
+            "f -4 -1 -2\r\nf 2 3 4\r\n"));
+  EXPECT_EQ(fine.positions.size(), 4u);
+  EXPECT_EQ(fine.triangles.size(), 4u);
+  EXPECT_EQ(fine.count_open_edges(), 0u);
+}
+
 TEST_F(SurfaceFiles, FailedWriteLeavesNothingBehind) {
   SurfaceMesh s = make_builtin_surface(BuiltinShapeDef{BuiltinShape::kBox, Vec3(1, 1, 1), 10});
   EXPECT_THROW(write_surface_file(s, path("nodir/out.obj")), InputError);
