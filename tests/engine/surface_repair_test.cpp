@@ -8,11 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <map>
 
 #include "engine/builtin_shapes.h"
 #include "engine/mesh_loader.h"
 #include "engine/tetrahedralize.h"
+#include "tests/broken_surfaces.h"
 #include "tests/temp_dir.h"
 
 namespace mtcut::engine {
@@ -20,38 +20,10 @@ namespace {
 
 using mtcut::test::input_error_of;
 
-SurfaceMesh ellipsoid(const Vec3& size, const Vec3& at = Vec3::Zero()) {
-  SurfaceMesh s = make_builtin_surface(BuiltinShapeDef{BuiltinShape::kEllipsoid, size, 100000});  // 1,280 faces
-  for (Vec3& p : s.positions) p += at;
-  return s;
-}
+using mtcut::test::box_surface;
+using mtcut::test::ellipsoid_surface;
+using mtcut::test::joined;
 
-SurfaceMesh box(const Vec3& size, const Vec3& at = Vec3::Zero()) {
-  SurfaceMesh s = make_builtin_surface(BuiltinShapeDef{BuiltinShape::kBox, size, 1});
-  for (Vec3& p : s.positions) p += at;
-  return s;
-}
-
-// Both surfaces as one, their coinciding points merged when asked.
-SurfaceMesh joined(const SurfaceMesh& a, const SurfaceMesh& b, bool merge_points) {
-  SurfaceMesh s = a;
-  std::map<std::array<double, 3>, std::int32_t> at;
-  if (merge_points)
-    for (std::size_t i = 0; i < a.positions.size(); ++i)
-      at[{a.positions[i].x(), a.positions[i].y(), a.positions[i].z()}] = static_cast<std::int32_t>(i);
-  std::vector<std::int32_t> id(b.positions.size());
-  for (std::size_t i = 0; i < b.positions.size(); ++i) {
-    const auto found = at.find({b.positions[i].x(), b.positions[i].y(), b.positions[i].z()});
-    if (merge_points && found != at.end()) {
-      id[i] = found->second;
-    } else {
-      id[i] = static_cast<std::int32_t>(s.positions.size());
-      s.positions.push_back(b.positions[i]);
-    }
-  }
-  for (const auto& t : b.triangles) s.triangles.push_back({id[t[0]], id[t[1]], id[t[2]]});
-  return s;
-}
 
 // The surface meshes, and its tets fill the volume it encloses.
 void expect_meshes(const SurfaceMesh& s, const std::string& what) {
@@ -62,7 +34,7 @@ void expect_meshes(const SurfaceMesh& s, const std::string& what) {
 }
 
 TEST(SurfaceRepair, ACleanSurfaceIsLeftAsItIs) {
-  SurfaceMesh s = ellipsoid(Vec3(0.16, 0.1, 0.07));
+  SurfaceMesh s = ellipsoid_surface(test::organ_size());
   const SurfaceMesh before = s;
   const SurfaceRepair r = repair_surface(s, "organ.obj");
   EXPECT_FALSE(r.changed());
@@ -71,7 +43,7 @@ TEST(SurfaceRepair, ACleanSurfaceIsLeftAsItIs) {
 }
 
 TEST(SurfaceRepair, DuplicatePointsAndTurnedFacesAreMendedExactly) {
-  const SurfaceMesh clean = ellipsoid(Vec3(0.16, 0.1, 0.07));
+  const SurfaceMesh clean = ellipsoid_surface(test::organ_size());
   SurfaceMesh soup;  // every triangle with its own points, every third one turned
   for (std::size_t t = 0; t < clean.triangles.size(); ++t) {
     const auto first = static_cast<std::int32_t>(soup.positions.size());
@@ -95,10 +67,8 @@ TEST(SurfaceRepair, DuplicatePointsAndTurnedFacesAreMendedExactly) {
 }
 
 TEST(SurfaceRepair, HolesAreClosed) {
-  SurfaceMesh s = ellipsoid(Vec3(0.16, 0.1, 0.07));
-  const double volume = s.enclosed_volume();
-  s.triangles.erase(s.triangles.begin() + 10, s.triangles.begin() + 13);
-  s.triangles.erase(s.triangles.begin() + 200);
+  const double volume = ellipsoid_surface(test::organ_size()).enclosed_volume();
+  SurfaceMesh s = test::holed_organ();
   const SurfaceRepair r = repair_surface(s, "holey.obj");
   EXPECT_EQ(r.step, SurfaceRepair::Step::kHoles);
   EXPECT_GE(r.holes_closed, 2u);
@@ -109,13 +79,13 @@ TEST(SurfaceRepair, HolesAreClosed) {
 }
 
 TEST(SurfaceRepair, OverlappingPartsBecomeTheirUnion) {
-  const SurfaceMesh a = ellipsoid(Vec3(0.16, 0.1, 0.07)), b = ellipsoid(Vec3(0.16, 0.1, 0.07), Vec3(0.05, 0.03, 0.01));
-  SurfaceMesh s = joined(a, b, false);
+  const double part = ellipsoid_surface(test::organ_size()).enclosed_volume();
+  SurfaceMesh s = test::crossing_organs();
   const SurfaceRepair r = repair_surface(s, "two.obj");
   EXPECT_EQ(r.step, SurfaceRepair::Step::kSelfIntersections);
   const double union_volume = s.enclosed_volume();
-  EXPECT_GT(union_volume, a.enclosed_volume());
-  EXPECT_LT(union_volume, a.enclosed_volume() + b.enclosed_volume());
+  EXPECT_GT(union_volume, part);
+  EXPECT_LT(union_volume, 2 * part);
   EXPECT_LT(r.max_distance, 1e-9);  // the union's surface is the input's, cut where the parts cross
   EXPECT_LT(r.volume_change, 0);
   expect_meshes(s, "two.obj");
@@ -124,7 +94,7 @@ TEST(SurfaceRepair, OverlappingPartsBecomeTheirUnion) {
 TEST(SurfaceRepair, ANonManifoldSeamIsMended) {
   // Two boxes sharing one edge, their points on it merged.
   const Vec3 side(0.05, 0.05, 0.05);
-  SurfaceMesh s = joined(box(side), box(side, Vec3(0.05, 0.05, 0)), true);
+  SurfaceMesh s = joined(box_surface(side), box_surface(side, Vec3(0.05, 0.05, 0)), true);
   ASSERT_GT(s.count_open_edges(), 0u);  // the seam's edges are on four faces
   const double volume = 2 * 0.05 * 0.05 * 0.05;
   const SurfaceRepair r = repair_surface(s, "seam.obj");
@@ -145,7 +115,7 @@ TEST(SurfaceRepair, AnOpenSheetCannotBeMadeASolid) {
 }
 
 TEST(SurfaceRepair, AWrapIsWatertightNearTheInputAndSaysHowNear) {
-  SurfaceMesh s = ellipsoid(Vec3(0.16, 0.1, 0.07));
+  SurfaceMesh s = ellipsoid_surface(test::organ_size());
   const double volume = s.enclosed_volume();
   const SurfaceRepair r = repair_surface(s, "organ.obj", true);
   EXPECT_EQ(r.step, SurfaceRepair::Step::kWrap);
@@ -161,8 +131,7 @@ TEST(SurfaceRepair, AWrapIsWatertightNearTheInputAndSaysHowNear) {
 TEST(SurfaceRepair, LoadMeshRepairsUnlessStrict) {
   mtcut::test::TempDir dir;
   const std::string path = dir.file("two.obj");
-  write_surface_file(joined(ellipsoid(Vec3(0.16, 0.1, 0.07)), ellipsoid(Vec3(0.16, 0.1, 0.07), Vec3(0.05, 0.03, 0.01)), false),
-                     path);
+  write_surface_file(test::crossing_organs(), path);
   const LoadedMesh loaded = load_mesh(path, {});
   EXPECT_TRUE(loaded.mesh.validate().ok());
   ASSERT_EQ(loaded.notes.size(), 1u);

@@ -10,11 +10,15 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <random>
 
 #include "cut/mt/mt_pieces.h"
+#include "engine/surface_mesh.h"
+#include "tests/broken_surfaces.h"
 #include "tests/cut/mt/stroke_test_util.h"
+#include "tests/temp_dir.h"
 #include "tests/test_size.h"
 
 namespace mtcut::test {
@@ -260,8 +264,9 @@ TEST(StrokeCutter, TurningStrokesUnderABudgetKeepTheMtValid) {
   }
 }
 
-// MTs of six meshes for the random strokes: the builtin shapes, shared
-// surfaces meshed by TetGen and a shared tet mesh.
+// MTs of eight meshes for the random strokes: the builtin shapes, shared
+// surfaces meshed by TetGen, a shared tet mesh, and surfaces repaired before
+// they were meshed (two organs that cross, one with holes: repaired_surface).
 const Mt& property_mt(const std::string& spec) {
   static std::map<std::string, Mt> cache;
   auto it = cache.find(spec);
@@ -270,6 +275,15 @@ const Mt& property_mt(const std::string& spec) {
   def.builtin_tets = 1500;
   const auto mesh = engine::load_mesh(spec, def).mesh;
   return cache.emplace(spec, engine::build_mt(mesh, engine::MtBuildOptions{})).first->second;
+}
+
+// A surface as people have them, written to a file for load_mesh to repair.
+std::string repaired_surface(const std::string& name) {
+  static const TempDir dir;
+  const std::string path = dir.file(name + ".obj");
+  if (!std::filesystem::exists(path))
+    engine::write_surface_file(name == "crossing" ? crossing_organs(1500) : holed_organ(1500), path);
+  return path;
 }
 
 // How many random strokes: MTCUT_STROKES, else 200 at the build's test size
@@ -299,7 +313,8 @@ TEST_P(StrokeCutterRandom, StrokesKeepTheMtValid) {
   const int shard = GetParam();
   const std::vector<std::string> specs = {"builtin:ellipsoid", "builtin:box", "builtin:cylinder",
                                           shared_mesh("liver.msh"), shared_mesh("torus.obj"),
-                                          shared_mesh("Armadillo_Tetra_4406.vtu")};
+                                          shared_mesh("Armadillo_Tetra_4406.vtu"), repaired_surface("crossing"),
+                                          repaired_surface("holed")};
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const int strokes = stroke_count();
   int tried = 0, one_leg_through = 0;
