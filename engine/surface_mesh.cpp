@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -360,7 +361,22 @@ void write_surface_file(const SurfaceMesh& surface, const std::string& path) {
   handles.reserve(surface.positions.size());
   for (const auto& p : surface.positions) handles.push_back(om.add_vertex(OmMesh::Point(p.x(), p.y(), p.z())));
   QuietOpenMesh quiet;
-  for (const auto& t : surface.triangles) om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+  // OpenMesh's halfedge mesh refuses a face that would make an edge or a
+  // vertex non-manifold (pieces of a cut that touch along an edge): such a
+  // face is written over copies of its vertices, so that no face is lost.
+  for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
+    const auto& t = surface.triangles[f];
+    const auto n = static_cast<std::int64_t>(handles.size());
+    if (std::min({t[0], t[1], t[2]}) < 0 || std::max({t[0], t[1], t[2]}) >= n || t[0] == t[1] || t[1] == t[2] ||
+        t[0] == t[2])
+      throw std::invalid_argument("write_surface_file: face " + std::to_string(f) + " has vertex ids " +
+                                  std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+                                  " of " + std::to_string(n));
+    if (om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]).is_valid()) continue;
+    std::array<OmMesh::VertexHandle, 3> copies;
+    for (int k = 0; k < 3; ++k) copies[k] = om.add_vertex(om.point(handles[t[k]]));
+    om.add_face(copies[0], copies[1], copies[2]);
+  }
   write_atomically(path, [&](const std::string& temp) {
     OpenMesh::IO::Options options;
     return OpenMesh::IO::write_mesh(om, temp, options, 17);

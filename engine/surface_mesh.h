@@ -35,7 +35,10 @@ bool is_surface_file(const std::string& path);
 SurfaceMesh read_surface_file(const std::string& path, MeshFormat format = MeshFormat::kUnknown);
 
 // Writes a surface (format from the extension: .obj .off .stl .ply) through
-// OpenMesh, atomically. Throws InputError when the path cannot be written.
+// OpenMesh, atomically, every face: one that would make an edge or a vertex
+// non-manifold goes over copies of its vertices. Throws InputError when the
+// path cannot be written, std::invalid_argument for a face whose vertex ids
+// repeat or are out of range.
 void write_surface_file(const SurfaceMesh& surface, const std::string& path);
 
 // A surface in a child process's result (engine/child_process.h): written

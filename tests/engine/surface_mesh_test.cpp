@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <stdexcept>
 
 #include "engine/builtin_shapes.h"
 #include "engine/input_error.h"
@@ -107,6 +111,37 @@ TEST_F(SurfaceFiles, DamagedObjRecordsAreNamedWithTheirLine) {
   EXPECT_EQ(fine.positions.size(), 4u);
   EXPECT_EQ(fine.triangles.size(), 4u);
   EXPECT_EQ(fine.count_open_edges(), 0u);
+}
+
+// Two tets' surfaces that share an edge (four faces on it, as where two
+// pieces of a cut touch): every face is written, the one OpenMesh would
+// refuse over copies of its vertices. A face of repeated ids is refused.
+TEST_F(SurfaceFiles, EveryFaceIsWrittenEvenWhereTheSurfaceIsNotManifold) {
+  SurfaceMesh s;
+  s.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, -1, -1), Vec3(1, 1, -1)};
+  // Tets (0 1 2 3) and (0 1 4 5), outward faces; edge 0-1 is in four.
+  s.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 4, 1}, {0, 1, 5}, {0, 5, 4}, {1, 4, 5}};
+  const auto text_of = [](const std::string& file) {
+    std::ifstream in(file);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  write_surface_file(s, path("bowtie.obj"));
+  std::istringstream obj(text_of(path("bowtie.obj")));
+  std::size_t faces = 0, vertices = 0;
+  for (std::string line; std::getline(obj, line);) {
+    faces += line.rfind("f ", 0) == 0;
+    vertices += line.rfind("v ", 0) == 0;
+  }
+  EXPECT_EQ(faces, 8u);
+  EXPECT_GT(vertices, 6u) << "a refused face's vertices are copied";
+  write_surface_file(s, path("bowtie.off"));
+  std::istringstream off(text_of(path("bowtie.off")));
+  std::string magic;
+  std::size_t off_vertices = 0, off_faces = 0;
+  off >> magic >> off_vertices >> off_faces;
+  EXPECT_EQ(off_faces, 8u);
+  s.triangles.push_back({2, 2, 3});
+  EXPECT_THROW(write_surface_file(s, path("degenerate.obj")), std::invalid_argument);
 }
 
 TEST_F(SurfaceFiles, FailedWriteLeavesNothingBehind) {
