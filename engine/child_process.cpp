@@ -29,7 +29,7 @@ std::string read_all(std::FILE* f) {
 ChildRun run_here(const std::function<int(std::FILE* result)>& work, std::FILE* result) {
   ChildRun run;
   try {
-    run.code = work(result);
+    run.code = work(result) & 0xff;  // as an exit status is
   } catch (...) {
     run.code = 1;
   }

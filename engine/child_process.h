@@ -37,7 +37,7 @@ struct ChildOptions {
 // process may only call async-signal-safe functions (a lock another thread
 // held at the fork, in the allocator for instance, stays held in the child
 // for ever). There the work runs in the calling thread, without the
-// deadline, the crash isolation or the quiet. The commands load their meshes
+// deadline, the crash isolation or the quiet (ChildRun::chatter is empty). The commands load their meshes
 // before they start threads, so they keep all three.
 ChildRun run_in_child(const std::function<int(std::FILE* result)>& work, const ChildOptions& options);
 

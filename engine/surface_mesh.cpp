@@ -15,6 +15,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <limits>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -136,9 +137,11 @@ void reject_impossible_counts(const std::string& path, const std::string& ext) {
 // scan: their NaNs arrive as values and are caught after reading.
 //
 // Its OBJ reader also skips a record it does not know and keeps going: a
-// damaged vertex line ("v*-0.8 ...", "v 0.1 0.2") is dropped and every face
-// after it then points at the wrong vertices. An OBJ's vertex records must
-// hold three numbers, and its faces' corners vertices it has.
+// damaged vertex line ("v*-0.8 ...", "v 0.1 0.2", "v 1e39 0 0": it reads
+// floats) is dropped and every face after it then points at the wrong
+// vertices. An OBJ's vertex records must hold three decimal numbers in a
+// float's range, and its faces' corners vertices it has; a byte order mark
+// would hide the first record.
 void reject_non_finite_text(const std::string& path, const std::string& ext) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
@@ -154,40 +157,56 @@ void reject_non_finite_text(const std::string& path, const std::string& ext) {
   in.clear();
   in.seekg(0);
   const bool obj = ext == ".obj";
+  bool in_header = ext == ".ply";  // a PLY header holds words, not numbers
   std::size_t number = 0;
   long long vertices = 0, last_corner = 0;
   std::size_t last_corner_line = 0;
   while (std::getline(in, line)) {
     ++number;
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+      throw InputError(describe_at(path, number, "the file starts with a byte order mark, which the reader would "
+                                                 "take for data; save it without one"));
+    if (in_header) {
+      in_header = line.rfind("end_header", 0) != 0;
+      continue;
+    }
     std::istringstream tokens(line);
-    std::string token, record;
+    std::string record;
+    if (!(tokens >> record) || record[0] == '#') continue;
+    // An OBJ's data records; its other records (g, o, s, usemtl, ...) hold names.
+    if (obj && record != "v" && record != "vt" && record != "vn" && record != "vp" && record != "vc" &&
+        record != "f") {
+      if (record[0] == 'v') throw InputError(describe_at(path, number, "'" + record + "' is not an OBJ record"));
+      continue;
+    }
     int numbers = 0;
-    bool first = true;
-    while (tokens >> token) {
-      if (first) record = token;
+    // In OFF, PLY and STL the first word is data too.
+    std::string token = record;
+    for (bool first = true; first || tokens >> token; first = false) {
+      if (token[0] == '#') break;  // a comment to the line's end
+      if (obj && first) continue;
       char* end = nullptr;
       const double value = std::strtod(token.c_str(), &end);
-      const bool is_number = end != token.c_str() && *end == '\0';
+      // The readers take decimal floats: not hexadecimal ones, nor any beyond a float's range.
+      const bool is_number = end != token.c_str() && *end == '\0' && token.find_first_of("xX") == std::string::npos;
       if (is_number && !std::isfinite(value))
         throw InputError(describe_at(path, number, "non-finite coordinate '" + token + "'"));
-      if (obj && !first && record == "v" && numbers < 3 && !is_number)
+      if (is_number && std::abs(value) > std::numeric_limits<float>::max())
+        throw InputError(describe_at(path, number, "coordinate '" + token + "' is beyond a float's range"));
+      if (obj && record == "v" && numbers < 3 && !is_number)
         throw InputError(describe_at(path, number, "vertex coordinate '" + token + "' is not a number"));
-      if (obj && !first && record == "f") {
+      if (obj && record == "f") {
         // "i", "i/t", "i//n" or "i/t/n": i counts from 1, or back from the last vertex when negative.
         const long long corner = std::strtoll(token.c_str(), &end, 10);
         if (end == token.c_str() || (*end != '\0' && *end != '/') || corner == 0 || corner < -vertices)
           throw InputError(describe_at(path, number, "face corner '" + token + "' is not a vertex of the file"));
         if (corner > last_corner) last_corner = corner, last_corner_line = number;
       }
-      numbers += is_number && !first;
-      first = false;
+      numbers += is_number;
     }
-    if (!obj || record.empty() || record[0] != 'v') continue;
-    if (record == "v") {
+    if (obj && record == "v") {
       if (numbers < 3) throw InputError(describe_at(path, number, "a vertex with fewer than three coordinates"));
       ++vertices;
-    } else if (record != "vt" && record != "vn" && record != "vp") {
-      throw InputError(describe_at(path, number, "'" + record + "' is not an OBJ record"));
     }
   }
   if (last_corner > vertices)
@@ -361,9 +380,16 @@ void write_surface_file(const SurfaceMesh& surface, const std::string& path) {
   handles.reserve(surface.positions.size());
   for (const auto& p : surface.positions) handles.push_back(om.add_vertex(OmMesh::Point(p.x(), p.y(), p.z())));
   QuietOpenMesh quiet;
-  // OpenMesh's halfedge mesh refuses a face that would make an edge or a
-  // vertex non-manifold (pieces of a cut that touch along an edge): such a
-  // face is written over copies of its vertices, so that no face is lost.
+  // OpenMesh's halfedge mesh refuses a face that would make it non-manifold
+  // (pieces of a cut that touch along an edge) or that is turned against a
+  // neighbour: such a face is written over copies of its vertices, shared
+  // by the faces refused (or over copies of its own when they clash too),
+  // so that no face is lost.
+  std::vector<OmMesh::VertexHandle> copy_of(handles.size());
+  const auto copy = [&](std::int32_t v) {
+    if (!copy_of[v].is_valid()) copy_of[v] = om.add_vertex(om.point(handles[v]));
+    return copy_of[v];
+  };
   for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
     const auto& t = surface.triangles[f];
     const auto n = static_cast<std::int64_t>(handles.size());
@@ -373,9 +399,10 @@ void write_surface_file(const SurfaceMesh& surface, const std::string& path) {
                                   std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
                                   " of " + std::to_string(n));
     if (om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]).is_valid()) continue;
-    std::array<OmMesh::VertexHandle, 3> copies;
-    for (int k = 0; k < 3; ++k) copies[k] = om.add_vertex(om.point(handles[t[k]]));
-    om.add_face(copies[0], copies[1], copies[2]);
+    if (om.add_face(copy(t[0]), copy(t[1]), copy(t[2])).is_valid()) continue;
+    std::array<OmMesh::VertexHandle, 3> own;
+    for (int k = 0; k < 3; ++k) own[k] = om.add_vertex(om.point(handles[t[k]]));
+    om.add_face(own[0], own[1], own[2]);
   }
   write_atomically(path, [&](const std::string& temp) {
     OpenMesh::IO::Options options;

@@ -61,6 +61,7 @@ TEST(ChildProcess, TheWorkRunsInAnotherProcessAndItsResultComesBack) {
 
 // (An abort, not a fault: the sanitizers' builds catch faults themselves.)
 TEST(ChildProcess, ACrashIsReportedWithItsSignal) {
+  ASSERT_FALSE(process_runs_other_threads());
   const ChildRun run = run_in_child([](std::FILE*) -> int { std::abort(); }, {});
   ASSERT_EQ(run.outcome, ChildRun::Outcome::kCrashed);
   EXPECT_EQ(run.code, SIGABRT);
@@ -68,6 +69,7 @@ TEST(ChildProcess, ACrashIsReportedWithItsSignal) {
 }
 
 TEST(ChildProcess, AChildPastItsDeadlineIsStopped) {
+  ASSERT_FALSE(process_runs_other_threads());
   ChildOptions options;
   options.deadline = std::chrono::steady_clock::now() + 200ms;
   const ChildRun run = run_in_child(
@@ -80,6 +82,7 @@ TEST(ChildProcess, AChildPastItsDeadlineIsStopped) {
 }
 
 TEST(ChildProcess, WhatTheChildPrintsIsKeptApart) {
+  ASSERT_FALSE(process_runs_other_threads());
   const ChildRun run = run_in_child(
       [](std::FILE*) {
         std::printf("chatter\n");

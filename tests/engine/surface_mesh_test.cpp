@@ -101,13 +101,23 @@ TEST_F(SurfaceFiles, DamagedObjRecordsAreNamedWithTheirLine) {
   EXPECT_NE(m.find("back.obj: line 5: face corner '-5'"), std::string::npos) << m;
   m = error_of("beyond.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n" + faces + "f 1 2 9/1/1\n");
   EXPECT_NE(m.find("beyond.obj: line 9: a face corner is vertex 9 of a file of 4"), std::string::npos) << m;
+  // What the reader takes for floats: a coordinate beyond a float's range or
+  // in hexadecimal would be dropped with its vertex.
+  m = error_of("huge.obj", "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nv 0 0 1\n" + faces);
+  EXPECT_NE(m.find("huge.obj: line 2: coordinate '1e39' is beyond a float's range"), std::string::npos) << m;
+  m = error_of("hex.obj", "v 0 0 0\nv 0x1p0 0 0\nv 0 1 0\nv 0 0 1\n" + faces);
+  EXPECT_NE(m.find("hex.obj: line 2: vertex coordinate '0x1p0' is not a number"), std::string::npos) << m;
+  // A byte order mark would hide the first vertex.
+  m = error_of("bom.obj", "\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n" + faces);
+  EXPECT_NE(m.find("bom.obj: line 1: the file starts with a byte order mark"), std::string::npos) << m;
   // What an OBJ may hold besides: colours after a vertex, texture and normal
-  // records, relative and slashed corners, groups, comments, CRLF ends.
+  // records, relative and slashed corners, groups (named "inf"), comments
+  // (on their own lines and after a face), empty lines, CRLF ends.
   const SurfaceMesh fine = read_surface_file(
       write("fine.obj",
             "# a tetrahedron\r\nmtllib t.mtl\r\no t\r\nv 0 0 0 1 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv 0 0 1\r\n"
-            "vt 0 0\r\nvn 0 0 1\r\ng side\r\ns off\r\nf 1/1/1 3/1/1 2/1/1\r\nf 1//1 2//1 4//1\r\n"
-            "f -4 -1 -2\r\nf 2 3 4\r\n"));
+            "vt 0 0\r\nvn 0 0 1\r\ng inf\r\ns off\r\nf 1/1/1 3/1/1 2/1/1 # the base\r\nf 1//1 2//1 4//1\r\n"
+            "# nan is not a number here\r\nf -4 -1 -2\r\n\r\nf 2 3 4\r\n"));
   EXPECT_EQ(fine.positions.size(), 4u);
   EXPECT_EQ(fine.triangles.size(), 4u);
   EXPECT_EQ(fine.count_open_edges(), 0u);
@@ -134,6 +144,7 @@ TEST_F(SurfaceFiles, EveryFaceIsWrittenEvenWhereTheSurfaceIsNotManifold) {
   }
   EXPECT_EQ(faces, 8u);
   EXPECT_GT(vertices, 6u) << "a refused face's vertices are copied";
+  EXPECT_LE(vertices, 12u) << "the faces refused share their copies";
   write_surface_file(s, path("bowtie.off"));
   std::istringstream off(text_of(path("bowtie.off")));
   std::string magic;
