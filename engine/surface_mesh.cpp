@@ -386,8 +386,14 @@ void write_surface_file(const SurfaceMesh& surface, const std::string& path) {
   // by the faces refused (or over copies of its own when they clash too),
   // so that no face is lost.
   std::vector<OmMesh::VertexHandle> copy_of(handles.size());
+  // (From the surface's positions: a reference to the mesh's own point would
+  // not survive the storage it lives in growing.)
+  const auto copy_of_point = [&](std::int32_t v) {
+    const Vec3& p = surface.positions[v];
+    return om.add_vertex(OmMesh::Point(p.x(), p.y(), p.z()));
+  };
   const auto copy = [&](std::int32_t v) {
-    if (!copy_of[v].is_valid()) copy_of[v] = om.add_vertex(om.point(handles[v]));
+    if (!copy_of[v].is_valid()) copy_of[v] = copy_of_point(v);
     return copy_of[v];
   };
   for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
@@ -401,7 +407,7 @@ void write_surface_file(const SurfaceMesh& surface, const std::string& path) {
     if (om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]).is_valid()) continue;
     if (om.add_face(copy(t[0]), copy(t[1]), copy(t[2])).is_valid()) continue;
     std::array<OmMesh::VertexHandle, 3> own;
-    for (int k = 0; k < 3; ++k) own[k] = om.add_vertex(om.point(handles[t[k]]));
+    for (int k = 0; k < 3; ++k) own[k] = copy_of_point(t[k]);
     om.add_face(own[0], own[1], own[2]);
   }
   write_atomically(path, [&](const std::string& temp) {
