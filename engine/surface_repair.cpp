@@ -24,6 +24,8 @@
 #include <CGAL/alpha_wrap_3.h>
 #include <CGAL/assertions_behaviour.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -387,8 +389,35 @@ std::string SurfaceRepair::describe(const std::string& source) const {
   return text;
 }
 
+namespace {
+
+// Whether every point lies within the wrap's offset of one plane (the
+// plane through their mean across their least spread): a sheet, which no
+// step can make a solid, and whose steps up to the wrap's refusal take
+// seconds (minutes in a sanitizer's build).
+bool is_flat(const SurfaceMesh& surface) {
+  Vec3 mean = Vec3::Zero(), lo = surface.positions.front(), hi = lo;
+  for (const Vec3& p : surface.positions) {
+    mean += p;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  mean /= static_cast<double>(surface.positions.size());
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : surface.positions) spread += (p - mean) * (p - mean).transpose();
+  const Vec3 normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(spread).eigenvectors().col(0);
+  double thickness = 0;
+  for (const Vec3& p : surface.positions) thickness = std::max(thickness, std::abs((p - mean).dot(normal)));
+  return thickness <= kWrapOffset * (hi - lo).norm();
+}
+
+}  // namespace
+
 SurfaceRepair repair_surface(SurfaceMesh& surface, const std::string& source, bool wrap) {
   if (surface.triangles.empty()) throw InputError(source + ": the surface has no faces");
+  if (is_flat(surface))
+    throw InputError(source + ": the surface could not be repaired into a closed one (" +
+                     std::to_string(surface.triangles.size()) + " faces, all in one plane: an open sheet, not a solid)");
   // Fit as it is: left untouched (not even renumbered).
   if (!wrap && fit_as_it_is(surface)) {
     SurfaceRepair report;
