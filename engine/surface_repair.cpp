@@ -396,6 +396,7 @@ namespace {
 // step can make a solid, and whose steps up to the wrap's refusal take
 // seconds (minutes in a sanitizer's build).
 bool is_flat(const SurfaceMesh& surface) {
+  if (surface.positions.empty()) return false;
   Vec3 mean = Vec3::Zero(), lo = surface.positions.front(), hi = lo;
   for (const Vec3& p : surface.positions) {
     mean += p;
