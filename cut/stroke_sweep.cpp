@@ -173,6 +173,7 @@ std::vector<CutPolygon> StrokeSweep::add(const Vec3& base, const Vec3& tip) {
     clear_part();
     start_with(Blade(0.5 * (before.first + last.first), 0.5 * (before.second + last.second)));
     start_with(last);
+    overlap_area_ = swept_area_;
     extends(next, corners);  // the hull corners with `next` (the part may not be planar: it starts anyway)
   }
   if (!blades_.empty()) {
@@ -243,6 +244,7 @@ void StrokeSweep::start_with(const Blade& blade) {
 void StrokeSweep::clear_part() {
   blades_.clear();
   swept_area_ = 0;
+  overlap_area_ = 0;
   sums_ = {};
   hull_corners_.clear();
   plane_.reset();
@@ -254,13 +256,17 @@ std::vector<CutPolygon> StrokeSweep::finish() {
   return out;
 }
 
+bool StrokeSweep::sweeps_own_area() const {
+  return swept_area_ - overlap_area_ > def_.hull_excess * overlap_area_;
+}
+
 std::vector<CutPolygon> StrokeSweep::close_part() {
-  if (blades_.size() < 2) return {};
+  if (blades_.size() < 2 || !sweeps_own_area()) return {};
   return part_polygon(corner_points(blades_));
 }
 
 std::optional<CutPolygon> StrokeSweep::current() const {
-  if (blades_.size() < 2) return std::nullopt;
+  if (blades_.size() < 2 || !sweeps_own_area()) return std::nullopt;
   std::vector<CutPolygon> p = part_polygon(hull_corners_);
   if (p.empty()) return std::nullopt;
   return std::move(p.front());

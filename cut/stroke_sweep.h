@@ -21,7 +21,12 @@
 // non-convex (the convex hull larger than the swept area by more than
 // `hull_excess`). The next part starts half a sweep back: at the pose midway
 // between the part's last two, then its last pose, then the new one, so
-// that no sweep between them is left uncut. What the cutter does at the
+// that no sweep between them is left uncut. Until its own sweeps (those
+// after that overlap) cover more than `hull_excess` of the overlap, the part
+// has no polygon: a blade drawn out along itself after the turn sweeps no
+// area, and its part's hull would be the overlap alone, tissue the ended
+// part cut already (the liver scenario's lift-out cut 376 tets of it again
+// in each of two frames, 4 to 5 ms each). What the cutter does at the
 // turn is its own (TimeCriticalCutter::recut): at a gentle turn the next
 // part starts exactly on the ended polygon's last blade edge and continues
 // its crack across it (the overlap behind the edge is dropped); at a sharp
@@ -122,6 +127,9 @@ class StrokeSweep {
   // `corners` receives the hull corners it would then have.
   bool extends(const Blade& next, std::vector<Vec3>& corners) const;
   void clear_part();
+  // The part's sweeps after its overlap with the last part cover some area
+  // of their own (see the header).
+  bool sweeps_own_area() const;
   // Adds a pose to an empty or two-pose part, no questions asked.
   void start_with(const Blade& blade);
 
@@ -137,6 +145,7 @@ class StrokeSweep {
   StrokeSweepDef def_;
   std::vector<Blade> blades_;  // the poses of the current part
   double swept_area_ = 0;      // sum of the areas its consecutive sweeps cover
+  double overlap_area_ = 0;    // of those, the half sweep it starts with after a turn
   // Why these: a haptic stylus gives a pose per millisecond, so a part can
   // hold thousands; fitting and hulling all of them at every pose made a
   // stroke quadratic (0.15 ms per pose after 2,000). The plane comes from

@@ -95,6 +95,47 @@ TEST(StrokeSweep, TurnEndsThePartAndTheNextOverlapsIt) {
   }
 }
 
+// A blade drawn along y, then pulled out along itself (the liver
+// scenario's lift-out): the draw is one polygon, and the lift sweeps no
+// area of its own, so it has none (its hull would be the half sweep it
+// overlaps the draw by, tissue the draw cut already). Moved across once out,
+// the blade makes a part again, overlap and all.
+TEST(StrokeSweep, ABladePulledOutAlongItselfAfterATurnCutsNothingMore) {
+  for (int poses : kPoseCounts) {
+    SCOPED_TRACE(std::to_string(poses) + " poses");
+    StrokeSweep stroke;
+    std::vector<CutPolygon> polygons;
+    const auto add = [&](const Vec3& base, const Vec3& tip) {
+      for (auto& p : stroke.add(base, tip)) polygons.push_back(std::move(p));
+    };
+    for (int f = 0; f <= poses; ++f) add(Vec3(0, 0.1 * f / poses, 1), Vec3(0, 0.1 * f / poses, 0));
+    ASSERT_TRUE(polygons.empty());
+    // The draw's part takes the lift's first poses while its hull stays
+    // within hull_excess of what it swept; from the pose that ends it, the
+    // lift has no polygon.
+    for (int f = 1; f <= poses; ++f) {
+      add(Vec3(0, 0.1, 1 + 0.5 * f / poses), Vec3(0, 0.1, 0.5 * f / poses));
+      if (!polygons.empty()) {
+        EXPECT_FALSE(stroke.current().has_value()) << "lift pose " << f;
+      }
+    }
+    ASSERT_EQ(polygons.size(), 1u);
+    EXPECT_GE(area(polygons[0]), 0.1 - 1e-12);
+    EXPECT_LE(area(polygons[0]), 0.1 * (1 + StrokeSweepDef{}.hull_excess));
+    for (auto& p : stroke.finish()) polygons.push_back(std::move(p));
+    EXPECT_EQ(polygons.size(), 1u) << "the lift has a polygon of its own";
+
+    // The same lift, then a move across: that part is cut.
+    StrokeSweep moved;
+    for (int f = 0; f <= poses; ++f) moved.add(Vec3(0, 0.1 * f / poses, 1), Vec3(0, 0.1 * f / poses, 0));
+    for (int f = 1; f <= poses; ++f) moved.add(Vec3(0, 0.1, 1 + 0.5 * f / poses), Vec3(0, 0.1, 0.5 * f / poses));
+    EXPECT_FALSE(moved.current().has_value());
+    for (int f = 1; f <= poses; ++f) moved.add(Vec3(0, 0.1 + 0.1 * f / poses, 1.5), Vec3(0, 0.1 + 0.1 * f / poses, 0.5));
+    ASSERT_TRUE(moved.current().has_value());
+    EXPECT_GT(area(*moved.current()), 0.09);
+  }
+}
+
 TEST(StrokeSweep, APartThatEndsWhereTheBladeTurnsBackSaysSo) {
   // A vertical blade along +y, then turning by `degrees` in xy (a frame of
   // five poses at a time): the first part ends at the turn, flagged turned
