@@ -133,6 +133,7 @@ TetId Mt::append_tet(const Tet& verts, FragId birth, FragId death, FaceMask boun
   if (death.valid()) set_death(t, death);
   ++live_tets_;
   ++revision_;
+  structure_revision_ = revision_;
   frag_created_revision_[birth.index()] = revision_;
   return t;
 }
@@ -169,13 +170,14 @@ void Mt::revive_tet(TetId t, FragId birth, FragId death) {
   ++live_tets_;
   ++revision_;
   frag_created_revision_[birth.index()] = revision_;
-  if (death.valid()) set_death(t, death);
+  if (death.valid()) link_death(t, death);
 }
 
 void Mt::set_birth(TetId t, FragId f) {
   assert(alive(t) && f.valid());
   erase_from(frag_created_, tet_birth_slot_, birth(t), t);
   ++revision_;
+  structure_revision_ = revision_;
   frag_created_revision_[birth(t).index()] = revision_;
   frag_created_revision_[f.index()] = revision_;
   tet_birth_[t.index()] = f;
@@ -184,6 +186,11 @@ void Mt::set_birth(TetId t, FragId f) {
 }
 
 void Mt::set_death(TetId t, FragId f) {
+  link_death(t, f);
+  structure_revision_ = revision_;
+}
+
+void Mt::link_death(TetId t, FragId f) {
   assert(alive(t));
   if (death(t).valid()) erase_from(frag_replaced_, tet_death_slot_, death(t), t);
   tet_death_[t.index()] = f;
@@ -220,6 +227,7 @@ void Mt::move_groups(FragId f, std::span<const FragId> parts, std::span<const st
   move(frag_created_, tet_birth_, tet_birth_slot_, group.first(n_created));
   move(frag_replaced_, tet_death_, tet_death_slot_, group.subspan(n_created));
   ++revision_;
+  structure_revision_ = revision_;
   for (FragId p : parts) frag_created_revision_[p.index()] = revision_;
 }
 
@@ -238,6 +246,7 @@ FragId Mt::add_fragment() {
   frag_created_.emplace_back();
   frag_replaced_.emplace_back();
   ++revision_;
+  structure_revision_ = revision_;
   frag_created_revision_.push_back(revision_);
   return FragId(frag_created_.size() - 1);
 }
@@ -249,6 +258,7 @@ void Mt::remove_last_fragment() {
   frag_replaced_.pop_back();
   frag_created_revision_.pop_back();
   ++revision_;
+  structure_revision_ = revision_;
 }
 
 std::size_t Mt::num_unused_vertices() const {
@@ -314,6 +324,7 @@ Mt::Compaction Mt::compact(std::size_t first_droppable_vertex, std::span<const T
     for (std::vector<TetId>& list : *lists)
       for (TetId& t : list) t = out.tet(t);
   ++revision_;
+  structure_revision_ = revision_;
   std::fill(frag_created_revision_.begin(), frag_created_revision_.end(), revision_);
   instance_ = InstanceId{};
   return out;

@@ -163,6 +163,14 @@ class Mt {
   // Incremented by every mutation: derived indexes (BVHs, cached orders)
   // compare it to know they are stale.
   std::uint64_t revision() const { return revision_; }
+  // The revision() at which the fragments' DAG last changed: a fragment
+  // added or removed, a tet moved to other fragments, a tet added other than
+  // as a piece, a compaction. While it stays, parents(f) and children(f) of
+  // every fragment are as they were: a cut that decomposes no fragment
+  // replaces tets by pieces born and dying in the same fragments, and a
+  // retraction revives them where their pieces were (selective refinement
+  // then follows a cut without a pass over the DAG).
+  std::uint64_t structure_revision() const { return structure_revision_; }
   // Unique to this object in the process, and renewed when it is copied or
   // assigned: two MTs with the same instance() are one object whose
   // revisions can be compared.
@@ -185,6 +193,9 @@ class Mt {
 
  private:
   TetId append_tet(const Tet& verts, FragId birth, FragId death, FaceMask boundary, float error, bool inherited);
+  // set_death without changing structure_revision() (revive_tet: the tet
+  // goes back where its pieces were).
+  void link_death(TetId t, FragId f);
   static void erase_from(std::vector<std::vector<TetId>>& lists, std::vector<std::int32_t>& slots, FragId f,
                          TetId t);
 
@@ -209,6 +220,7 @@ class Mt {
   double fine_volume_ = 0.0;
   bool boundary_preserved_ = true;
   std::uint64_t revision_ = 0;
+  std::uint64_t structure_revision_ = 0;
   // A process-wide unique number that a copy does not share.
   struct InstanceId {
     std::uint64_t value = next();

@@ -72,12 +72,26 @@ std::size_t SelectiveRefiner::bytes() const {
          summary_.capacity() * sizeof(FragmentSummary);
 }
 
+void SelectiveRefiner::summarize(const Mt& mt, FragId f, FragmentSummary& summary) {
+  Aabb box;
+  TetId worst = mt.created(f).front();
+  for (TetId t : mt.created(f)) {
+    box.extend(tet_box(mt, t));
+    if (mt.error(t) > mt.error(worst)) worst = t;
+  }
+  summary.box = box;
+  summary.worst_box = tet_box(mt, worst);
+  summary.error = mt.error(worst);
+  summary.computed = true;
+}
+
 std::vector<FragId> SelectiveRefiner::rebuild_index(const Mt& mt) {
   // What an index keeps of a fragment depends only on its created tets:
   // kept while created_revision says they did not change (in this MT).
   if (index_instance_ != mt.instance()) summary_.clear();
   index_instance_ = mt.instance();
   summary_.resize(mt.num_fragments());
+  item_of_.assign(mt.num_fragments(), -1);
   std::vector<FragId> changed;
   indexed_.clear(), frag_box_.clear();
   for (std::size_t i = 0; i < mt.num_fragments(); ++i) {
@@ -89,46 +103,77 @@ std::vector<FragId> SelectiveRefiner::rebuild_index(const Mt& mt) {
       summary.computed = false;
     }
     if (f == mt.root() || f == mt.drain() || mt.created(f).empty()) continue;
-    if (!summary.computed) {
-      Aabb box;
-      TetId worst = mt.created(f).front();
-      for (TetId t : mt.created(f)) {
-        box.extend(tet_box(mt, t));
-        if (mt.error(t) > mt.error(worst)) worst = t;
-      }
-      summary.box = box;
-      summary.worst_box = tet_box(mt, worst);
-      summary.error = mt.error(worst);
-      summary.computed = true;
-    }
+    if (!summary.computed) summarize(mt, f, summary);
+    item_of_[i] = static_cast<std::int32_t>(indexed_.size());
     indexed_.push_back(f);
     frag_box_.push_back(summary.box);
   }
   std::vector<std::int32_t> levels(indexed_.size());
   for (std::size_t i = 0; i < levels.size(); ++i) levels[i] = error_level(item_summary(i).error);
   bvh_.build(frag_box_, levels, 2);
-  // Error bounds bottom-up: children always follow their parent in the array.
-  const auto nodes = bvh_.nodes();
+  fit_nodes();
+  index_revision_ = mt.revision();
+  index_structure_ = mt.structure_revision();
+  return changed;
+}
+
+std::optional<std::vector<FragId>> SelectiveRefiner::refit_index(const Mt& mt) {
+  if (index_instance_ != mt.instance() || index_structure_ != mt.structure_revision() ||
+      summary_.size() != mt.num_fragments())
+    return std::nullopt;
+  std::vector<FragId> changed;
+  for (std::size_t i = 0; i < mt.num_fragments(); ++i)
+    if (summary_[i].revision != mt.created_revision(FragId(i))) changed.emplace_back(i);
+  for (FragId f : changed) {
+    const bool indexed = f != mt.root() && f != mt.drain() && !mt.created(f).empty();
+    if (indexed != (item_of_[f.index()] >= 0)) return std::nullopt;
+  }
+  for (FragId f : changed) {
+    FragmentSummary& summary = summary_[f.index()];
+    summary.revision = mt.created_revision(f);
+    summary.computed = false;
+    if (item_of_[f.index()] < 0) continue;
+    summarize(mt, f, summary);
+    frag_box_[static_cast<std::size_t>(item_of_[f.index()])] = summary.box;
+  }
+  // The tree's shape stays (built for boxes the cut's pieces lie within).
+  fit_nodes();
+  index_revision_ = mt.revision();
+  return changed;
+}
+
+void SelectiveRefiner::fit_nodes() {
+  // Bottom-up: children always follow their parent in the array.
+  const auto nodes = bvh_.mutable_nodes();
   node_min_.assign(nodes.size(), 0.0f);
   node_max_.assign(nodes.size(), 0.0f);
   for (std::size_t n = nodes.size(); n-- > 0;) {
-    const BvhNode& node = nodes[n];
+    BvhNode& node = nodes[n];
     if (node.leaf()) {
-      float lo = item_summary(static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(node.first)])).error,
-            hi = lo;
-      for (std::int32_t i = node.first; i < node.first + node.count; ++i) {
-        const float e = item_summary(static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(i)])).error;
+      const auto item = [&](std::int32_t k) { return static_cast<std::size_t>(bvh_.items()[static_cast<std::size_t>(k)]); };
+      float lo = item_summary(item(node.first)).error, hi = lo;
+      Aabb box;
+      for (std::int32_t k = node.first; k < node.first + node.count; ++k) {
+        const float e = item_summary(item(k)).error;
         lo = std::min(lo, e), hi = std::max(hi, e);
+        box.extend(frag_box_[item(k)]);
       }
       node_min_[n] = lo, node_max_[n] = hi;
+      node.box = box;
     } else {
       const auto l = static_cast<std::size_t>(node.first);
       node_min_[n] = std::min(node_min_[l], node_min_[l + 1]);
       node_max_[n] = std::max(node_max_[l], node_max_[l + 1]);
+      Aabb box = nodes[l].box;
+      box.extend(nodes[l + 1].box);
+      node.box = box;
     }
   }
-  index_revision_ = mt.revision();
-  return changed;
+}
+
+bool SelectiveRefiner::holds_what_it_left(const Frontier& frontier) const {
+  if (frontier.fragments().size() != left_.size()) return false;
+  return std::all_of(left_.begin(), left_.end(), [&](FragId f) { return frontier.contains(f); });
 }
 
 SelectiveRefiner::Stats SelectiveRefiner::update(const Mt& mt, const ErrorField& field, Frontier& frontier) {
@@ -137,9 +182,13 @@ SelectiveRefiner::Stats SelectiveRefiner::update(const Mt& mt, const ErrorField&
   // of every fragment whose created tets did not change.
   std::vector<FragId> changed;
   bool carried = have_last_ && last_field_.same_shape(field) && meets_.size() <= mt.num_fragments();
+  bool refitted = false;
   if (index_revision_ != mt.revision() || index_instance_ != mt.instance()) {
     carried = carried && index_instance_ == mt.instance();
-    changed = rebuild_index(mt);
+    std::optional<std::vector<FragId>> refit;
+    if (carried && meets_.size() == mt.num_fragments()) refit = refit_index(mt);
+    refitted = refit.has_value();
+    changed = refitted ? std::move(*refit) : rebuild_index(mt);
     have_last_ = false;
   }
   frontier.sync(mt);
@@ -147,6 +196,9 @@ SelectiveRefiner::Stats SelectiveRefiner::update(const Mt& mt, const ErrorField&
                            frontier_version_ == frontier.version() && last_field_.same_shape(field);
   if (incremental) {
     incremental_update(mt, field, frontier, stats);
+  } else if (refitted && holds_what_it_left(frontier)) {
+    follow_cut_update(mt, field, frontier, stats, changed);
+    stats.followed_cut = true;
   } else {
     full_update(mt, field, frontier, stats, carried ? &changed : nullptr);
   }
@@ -155,6 +207,7 @@ SelectiveRefiner::Stats SelectiveRefiner::update(const Mt& mt, const ErrorField&
   have_last_ = true;
   mt_revision_ = mt.revision();
   frontier_version_ = frontier.version();
+  left_.assign(frontier.fragments().begin(), frontier.fragments().end());
   return stats;
 }
 
@@ -191,7 +244,39 @@ void SelectiveRefiner::full_update(const Mt& mt, const ErrorField& field, Fronti
 
 void SelectiveRefiner::incremental_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats) {
   follow_focus(mt, field, stats);
+  apply_status_changes(mt, frontier, stats);
+}
 
+void SelectiveRefiner::follow_cut_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats,
+                                         const std::vector<FragId>& changed) {
+  // The frontier is S* of the statuses before the cut (the same fragments,
+  // the same DAG): the others' move with the focus; the changed ones' are
+  // tested from scratch and listed where they differ from before.
+  std::vector<char> before(changed.size());
+  for (std::size_t i = 0; i < changed.size(); ++i) before[i] = meets_[changed[i].index()];
+  follow_focus(mt, field, stats);
+  for (std::size_t i = 0; i < changed.size(); ++i) meets_[changed[i].index()] = fragment_meets(mt, changed[i], field);
+  stats.fragments_tested += changed.size();
+  // The walk may have listed a changed fragment from its stale status.
+  const auto stale = [&](bool good) { return [&, good](FragId f) { return (meets_[f.index()] != 0) != good; }; };
+  std::erase_if(changed_bad_, stale(false));
+  std::erase_if(changed_good_, stale(true));
+  for (std::size_t i = 0; i < changed.size(); ++i) {
+    const FragId f = changed[i];
+    // The root is always in S* and the drain never (target_membership).
+    if (meets_[f.index()] == before[i] || f == mt.root() || f == mt.drain()) continue;
+    std::vector<FragId>& list = meets_[f.index()] ? changed_good_ : changed_bad_;
+    if (std::find(list.begin(), list.end(), f) == list.end()) list.push_back(f);
+  }
+  apply_status_changes(mt, frontier, stats);
+#ifndef NDEBUG
+  const std::vector<FragId> target = target_fragments(mt, field);
+  assert(target.size() == frontier.fragments().size() &&
+         std::all_of(target.begin(), target.end(), [&](FragId f) { return frontier.contains(f); }));
+#endif
+}
+
+void SelectiveRefiner::apply_status_changes(const Mt& mt, Frontier& frontier, Stats& stats) {
   // Fragments that now fail leave, and everything that depends on them.
   for (FragId f : changed_bad_)
     if (frontier.contains(f)) refine_with_descendants(mt, f, frontier, stats);

@@ -34,6 +34,7 @@
 // added when their parents are in, and their children after them.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "engine/mt/bvh.h"
@@ -89,6 +90,7 @@ class SelectiveRefiner {
  public:
   struct Stats {
     bool incremental = false;         // false: a full pass was needed
+    bool followed_cut = false;        // no full pass after a cut that left the DAG as it was
     std::size_t nodes_visited = 0;    // BVH nodes looked at
     std::size_t fragments_tested = 0;
     std::size_t status_changes = 0;
@@ -98,11 +100,15 @@ class SelectiveRefiner {
 
   // Moves `frontier` to S*(field). Incremental when the MT, the frontier and
   // the field's shape are as this refiner's previous call left them (only
-  // the focus moved); otherwise one full pass over the fragments. After the
-  // MT changed (a cut), that pass re-indexes and re-tests only the
-  // fragments whose created tets changed (Mt::created_revision): the others'
-  // status follows the focus as in an incremental update, from the last
-  // call's, which is exact for them.
+  // the focus moved). After a cut that left the fragments' DAG as it was
+  // (Mt::structure_revision) and the frontier's fragments as this refiner
+  // left them (the cut followed in place), incremental too: the index is
+  // refitted to the fragments whose created tets changed
+  // (Mt::created_revision), their status is found again, and they join the
+  // fragments whose status the focus's move changed. Otherwise one full
+  // pass over the fragments, which after a cut re-indexes and re-tests only
+  // the changed fragments: the others' status follows the focus as in an
+  // incremental update, from the last call's, which is exact for them.
   Stats update(const Mt& mt, const ErrorField& field, Frontier& frontier);
   std::size_t bytes() const;
 
@@ -110,6 +116,15 @@ class SelectiveRefiner {
   // Re-indexes; returns the fragments whose created tets changed since the
   // last index (all of them the first time).
   std::vector<FragId> rebuild_index(const Mt& mt);
+  // The index's boxes and error bounds, refitted to the fragments whose
+  // created tets changed since it was built or refitted, which are
+  // returned; nullopt when that is not enough (the DAG changed, or a
+  // fragment came to create tets or stopped to): rebuild_index then.
+  std::optional<std::vector<FragId>> refit_index(const Mt& mt);
+  // The node boxes and error bounds, from the items' up.
+  void fit_nodes();
+  // The fragments of `frontier` are those this refiner's last call left.
+  bool holds_what_it_left(const Frontier& frontier) const;
   // `changed`: when not null, meets_ holds every other fragment's status
   // under last_field_, and only these are tested from scratch.
   void full_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats,
@@ -119,6 +134,11 @@ class SelectiveRefiner {
   // listing them in changed_good_ / changed_bad_.
   void follow_focus(const Mt& mt, const ErrorField& field, Stats& stats);
   void incremental_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats);
+  // After a cut (see update): `changed` fragments re-tested beside the focus's move.
+  void follow_cut_update(const Mt& mt, const ErrorField& field, Frontier& frontier, Stats& stats,
+                         const std::vector<FragId>& changed);
+  // The frontier follows the fragments listed in changed_bad_ / changed_good_.
+  void apply_status_changes(const Mt& mt, Frontier& frontier, Stats& stats);
   void refine_with_descendants(const Mt& mt, FragId f, Frontier& frontier, Stats& stats);
 
   Bvh bvh_;                         // over indexed fragments
@@ -136,13 +156,18 @@ class SelectiveRefiner {
     float error = 0.0f;
   };
   std::vector<FragmentSummary> summary_;
+  std::vector<std::int32_t> item_of_;  // (n_fragments) its BVH item, -1 when not indexed
   // BVH item `item`'s fragment's summary.
   const FragmentSummary& item_summary(std::size_t item) const { return summary_[indexed_[item].index()]; }
+  // (Re)computes a summary from f's created tets.
+  static void summarize(const Mt& mt, FragId f, FragmentSummary& summary);
   std::uint64_t index_instance_ = 0;  // the Mt::instance() the index and summary_ are of
   ErrorField last_field_;
   bool have_last_ = false;
   std::uint64_t mt_revision_ = 0;
   std::uint64_t index_revision_ = ~std::uint64_t{0};
+  std::uint64_t index_structure_ = ~std::uint64_t{0};  // the Mt::structure_revision() indexed
+  std::vector<FragId> left_;  // the frontier's fragments the last call left, ascending
   std::uint64_t frontier_version_ = 0;
   std::vector<FragId> changed_bad_, changed_good_, queue_;  // scratch
 };
