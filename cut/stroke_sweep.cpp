@@ -256,17 +256,17 @@ std::vector<CutPolygon> StrokeSweep::finish() {
   return out;
 }
 
-bool StrokeSweep::sweeps_own_area() const {
-  return swept_area_ - overlap_area_ > def_.hull_excess * overlap_area_;
-}
+double StrokeSweep::own_area() const { return swept_area_ - overlap_area_; }
 
 std::vector<CutPolygon> StrokeSweep::close_part() {
-  if (blades_.size() < 2 || !sweeps_own_area()) return {};
+  // Any area of its own: its sweeps are cut, the overlap with them.
+  const double diameter = blades_.empty() ? 0.0 : (sums_.hi - sums_.lo).norm();
+  if (blades_.size() < 2 || own_area() <= CutPolygonDef{}.min_relative_area * diameter * diameter) return {};
   return part_polygon(corner_points(blades_));
 }
 
 std::optional<CutPolygon> StrokeSweep::current() const {
-  if (blades_.size() < 2 || !sweeps_own_area()) return std::nullopt;
+  if (blades_.size() < 2 || own_area() <= def_.hull_excess * overlap_area_) return std::nullopt;
   std::vector<CutPolygon> p = part_polygon(hull_corners_);
   if (p.empty()) return std::nullopt;
   return std::move(p.front());

@@ -23,10 +23,15 @@
 // between the part's last two, then its last pose, then the new one, so
 // that no sweep between them is left uncut. Until its own sweeps (those
 // after that overlap) cover more than `hull_excess` of the overlap, the part
-// has no polygon: a blade drawn out along itself after the turn sweeps no
-// area, and its part's hull would be the overlap alone, tissue the ended
-// part cut already (the liver scenario's lift-out cut 376 tets of it again
-// in each of two frames, 4 to 5 ms each). What the cutter does at the
+// in progress has no polygon (current()), and a part that ends with no area
+// of its own has none at all: a blade drawn out along itself after the turn
+// sweeps no area, and its part's hull would be the overlap alone, tissue the
+// ended part cut already (the liver scenario's lift-out cut 376 tets of it
+// again in each of two frames, 4 to 5 ms each). The cutter decides how the
+// ended part meets the next one when it ends, from the next part's polygon
+// then; a next part whose polygon comes later (its first sweeps under that
+// share: a blade slowed forty times at the turn) starts a crack of its own
+// there. What the cutter does at the
 // turn is its own (TimeCriticalCutter::recut): at a gentle turn the next
 // part starts exactly on the ended polygon's last blade edge and continues
 // its crack across it (the overlap behind the edge is dropped); at a sharp
@@ -127,9 +132,9 @@ class StrokeSweep {
   // `corners` receives the hull corners it would then have.
   bool extends(const Blade& next, std::vector<Vec3>& corners) const;
   void clear_part();
-  // The part's sweeps after its overlap with the last part cover some area
-  // of their own (see the header).
-  bool sweeps_own_area() const;
+  // The area the part's sweeps cover after its overlap with the last part
+  // (see the header).
+  double own_area() const;
   // Adds a pose to an empty or two-pose part, no questions asked.
   void start_with(const Blade& blade);
 

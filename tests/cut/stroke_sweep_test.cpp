@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mtcut::cut {
@@ -134,6 +135,38 @@ TEST(StrokeSweep, ABladePulledOutAlongItselfAfterATurnCutsNothingMore) {
     ASSERT_TRUE(moved.current().has_value());
     EXPECT_GT(area(*moved.current()), 0.09);
   }
+}
+
+// Parts with little or no area of their own: the blade drawn along +y is
+// lifted while it drifts on, lifted straight (the draw's part ends: its
+// hull grows, its sweep does not), lifted drifting a fiftieth as far, and
+// moved along +x out of the plane. A part has no polygon while its own
+// sweeps are under hull_excess of its overlap, and none at all if it ends
+// so, yet every point the blade swept lies on some polygon.
+TEST(StrokeSweep, PartsWithLittleAreaOfTheirOwnLeaveNoSweepUncut) {
+  const auto blade = [](double x, double y, double lift) {
+    return std::pair<Vec3, Vec3>(Vec3(x, y, 1 + lift), Vec3(x, y, lift));
+  };
+  std::vector<std::pair<Vec3, Vec3>> poses;
+  for (int f = 0; f <= 10; ++f) poses.push_back(blade(0, 0.1 * f, 0));
+  for (const auto& b : {blade(0, 1.02, 0.05), blade(0, 1.02, 0.15), blade(0, 1.0202, 0.25), blade(0, 1.0204, 0.35),
+                        blade(0.05, 1.0204, 0.35), blade(0.1, 1.0204, 0.35)})
+    poses.push_back(b);
+  StrokeSweep stroke;
+  std::vector<CutPolygon> polygons;
+  for (const auto& [base, tip] : poses)
+    for (auto& p : stroke.add(base, tip)) polygons.push_back(std::move(p));
+  for (auto& p : stroke.finish()) polygons.push_back(std::move(p));
+  ASSERT_FALSE(polygons.empty());
+  for (std::size_t i = 0; i + 1 < poses.size(); ++i)
+    for (int a = 1; a < 8; ++a)  // inside the sweep: its outline is a polygon's to rounding
+      for (int b = 1; b < 8; ++b) {
+        const double s = a / 8.0, t = b / 8.0;
+        const Vec3 base = (1 - s) * poses[i].first + s * poses[i + 1].first;
+        const Vec3 tip = (1 - s) * poses[i].second + s * poses[i + 1].second;
+        const Vec3 x = (1 - t) * base + t * tip;
+        EXPECT_LT(distance_to_cut(polygons, x), 1e-3) << "sweep " << i << " at " << s << ", " << t;
+      }
 }
 
 TEST(StrokeSweep, APartThatEndsWhereTheBladeTurnsBackSaysSo) {

@@ -37,10 +37,10 @@ TEST_P(RefinerAfterCuts, ReachesTheFrontierExtractedFromScratch) {
   std::size_t cuts = 0, partial_passes = 0, followed = 0, undecomposed = 0;
   // The last cut, when it decomposed nothing: taken back at the next step.
   std::optional<std::pair<cut::MtChangeReport, std::size_t>> provisional;
-  for (int step = 0; step < 36; ++step) {
+  for (int step = 0; step < 60; ++step) {
     field.focus = engine::Segment::point(box.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(box.hi - box.lo));
     const engine::SelectiveRefiner::Stats stats = refiner.update(mt, field, frontier);
-    partial_passes += !stats.incremental && stats.fragments_tested < mt.num_fragments();
+    partial_passes += !stats.incremental && !stats.followed_cut && stats.fragments_tested < mt.num_fragments();
     followed += stats.followed_cut;
     ASSERT_EQ(frontier_difference(frontier, engine::extract_frontier(mt, field)), "") << "step " << step;
     ASSERT_TRUE(engine::validate_frontier(mt, frontier).ok()) << "step " << step;
@@ -54,7 +54,7 @@ TEST_P(RefinerAfterCuts, ReachesTheFrontierExtractedFromScratch) {
     if (step % 3 == 2) continue;  // some steps only move the focus
     const CutPolygon polygon = random_polygon(box, rng, step % 4 == 0);
     cut::CutMtOptions options;
-    options.def.decompose = step % 2 == 1;
+    options.def.decompose = step % 5 < 3;  // complete polygons (step % 4 == 0) of both kinds too
     const std::size_t fragments_before = mt.num_fragments();
     cut::MtChangeReport changes = cut::cut_mt(mt, bvh, polygon, {}, options);
     cut::follow_cut(mt, frontier, changes);
