@@ -26,8 +26,8 @@
 // in progress has no polygon (current()), and a part that ends with no area
 // of its own has none at all: a blade drawn out along itself after the turn
 // sweeps no area, and its part's hull would be the overlap alone, tissue the
-// ended part cut already (the liver scenario's lift-out cut 376 tets of it
-// again in each of two frames, 4 to 5 ms each). The cutter decides how the
+// ended part cut already, which the cutter would split again as a new crack
+// meeting the old one. The cutter decides how the
 // ended part meets the next one when it ends, from the next part's polygon
 // then; a next part whose polygon comes later (its first sweeps under that
 // share: a blade slowed forty times at the turn) starts a crack of its own

@@ -257,10 +257,8 @@ void SelectiveRefiner::follow_cut_update(const Mt& mt, const ErrorField& field, 
   follow_focus(mt, field, stats);
   for (std::size_t i = 0; i < changed.size(); ++i) meets_[changed[i].index()] = fragment_meets(mt, changed[i], field);
   stats.fragments_tested += changed.size();
-  // The walk may have listed a changed fragment from its stale status.
-  const auto stale = [&](bool good) { return [&, good](FragId f) { return (meets_[f.index()] != 0) != good; }; };
-  std::erase_if(changed_bad_, stale(false));
-  std::erase_if(changed_good_, stale(true));
+  // The walk lists a changed fragment it tested (by the same test) against
+  // its status before: listed once, here or there.
   for (std::size_t i = 0; i < changed.size(); ++i) {
     const FragId f = changed[i];
     // The root is always in S* and the drain never (target_membership).

@@ -167,7 +167,7 @@ class SelectiveRefiner {
   std::uint64_t mt_revision_ = 0;
   std::uint64_t index_revision_ = ~std::uint64_t{0};
   std::uint64_t index_structure_ = ~std::uint64_t{0};  // the Mt::structure_revision() indexed
-  std::vector<FragId> left_;  // the frontier's fragments the last call left, ascending
+  std::vector<FragId> left_;  // the frontier's fragments the last call left
   std::uint64_t frontier_version_ = 0;
   std::vector<FragId> changed_bad_, changed_good_, queue_;  // scratch
 };

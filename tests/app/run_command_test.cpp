@@ -132,31 +132,25 @@ TEST_F(RunCommand, SameScenarioTwiceGivesTheSameStateHash) {
 // tet order (they were summed in std::sort's unspecified order of equal keys).
 constexpr const char* kDefaultScenarioGoldenHash = "49b54fc5798d3934";
 
-// The pieces column of a run's metrics.csv at `frame`.
+// The pieces column of a run's metrics.csv at `frame` (-1: no such row).
 int pieces_at_frame(const std::string& metrics_csv, int frame) {
-  std::istringstream in(metrics_csv);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  for (std::istringstream h(line); std::getline(h, line, ',');) header.push_back(line);
+  const std::vector<std::string> lines = lines_of(metrics_csv);
+  if (lines.empty()) return -1;
+  const std::vector<std::string> header = fields_of(lines.front());
   const auto column = static_cast<std::size_t>(std::find(header.begin(), header.end(), "pieces") - header.begin());
-  while (std::getline(in, line)) {
-    std::vector<std::string> fields;
-    for (std::istringstream f(line); std::getline(f, line, ',');) fields.push_back(line);
-    if (column < fields.size() && !fields.empty() && std::stoi(fields[0]) == frame) return std::stoi(fields[column]);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const std::vector<std::string> fields = fields_of(lines[i]);
+    if (column < fields.size() && std::stoi(fields[0]) == frame) return std::stoi(fields[column]);
   }
   return -1;
 }
 
 // The other shipped scenarios run valid to their end with no NaN and no cut
 // refused. The stress scenario's first stroke goes across its front end
-// through the whole organ (down below the floor it sags onto) in frames 1
-// to 27: the front end comes off then, and pieces never join again. (A
-// change to how a deformed cut is carried to rest space once left the
-// scenario in one piece with every test passing; and its through strokes
-// once stopped above the layer of tissue lying on the floor, so that only a
-// cut of tissue the blade never reached, extrapolated into rest space, let
-// a piece come off.)
+// through the whole organ, down below the floor the organ sags onto, in
+// frames 1 to 27: the front end comes off then, and pieces never join
+// again. (It asserts the cut of tissue the blade went through: a cut
+// carried wrongly to rest space leaves the front end on.)
 TEST_F(RunCommand, TheStressAndLiverScenariosRunValid) {
   for (const std::string name : {"stress", "liver"}) {
     nlohmann::json out = expect_valid_run(quoted(source_path("config/scenarios/" + name + ".toml")), path(name));

@@ -20,20 +20,6 @@ namespace mtcut::test {
 namespace {
 namespace fs = std::filesystem;
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-std::vector<std::string> fields_of(const std::string& line) {
-  std::vector<std::string> fields;
-  std::istringstream in(line);
-  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
-  return fields;
-}
-
 // The .vtu's XML part (up to its appended block), checked to be well formed
 // (tags balanced), with its cell data arrays decoded from the appended block.
 struct VtuFile {
