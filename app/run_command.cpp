@@ -78,7 +78,9 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
   const fs::path dir = options.out_dir.empty() ? fs::path(default_out_dir(scenario.file)) : fs::path(options.out_dir);
   make_out_dir(dir);
 
-  sim::World world(std::move(mt), scenario.world);
+  // The blade's first pose, known now for a scripted path and a replay (not a live device).
+  const std::optional<sim::ScalpelPose> blade = hid ? hid->start_pose() : scenario.scalpel.pose_at(0.0);
+  sim::World world(std::move(mt), scenario.world, blade);
   if (hid) hid->start();  // last: a live input's clock starts with the World's time at 0
   const int frames = options.frames_override > 0 ? options.frames_override : scenario.frames;
   record.frames_requested = frames;

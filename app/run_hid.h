@@ -42,6 +42,8 @@ class RunHid {
 
   // The samples for the frame at World time t, the last one at t (live: waits for them).
   std::vector<sim::ScalpelKeyframe> frame_samples(double t) { return feed_->frame_samples(t); }
+  // The blade's pose at World time 0, when known before start() (a replay).
+  std::optional<sim::ScalpelPose> start_pose() const { return feed_ ? feed_->start_pose() : std::nullopt; }
   // The frame at t took `step_seconds`: latency of the samples it carried.
   void stepped(double t, double step_seconds);
   // Prints the input's events ("mtcut: hid: ..."), each once.

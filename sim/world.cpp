@@ -51,10 +51,12 @@ World::~World() {
   if (cut_springs_) cut_springs_->springs.wait();
 }
 
-World::World(engine::Mt mt, const WorldDef& def) : def_(def), mt_(std::move(mt)), bvh_(mt_) {
+World::World(engine::Mt mt, const WorldDef& def, const std::optional<ScalpelPose>& blade)
+    : def_(def), mt_(std::move(mt)), bvh_(mt_) {
   if (def_.lod.background_build) builder_ = std::make_unique<WorkerThread>();
   cutter_.reserve(mt_);  // room for the strokes' cuts, made now rather than in a frame
   frontier_ = def_.lod.enabled ? engine::Frontier::coarsest(mt_) : engine::Frontier::finest(mt_);
+  if (def_.lod.enabled && blade) refiner_.update(mt_, error_field(*blade), frontier_);
   model_ = ModelInputs::of(mt_, frontier_, def_.material, def_.fixed).build();
   state_ = rest_state(model_);
   pieces_ = cut::count_pieces(mt_);  // the cutter reports them once a cut may change them

@@ -93,8 +93,15 @@ struct FrameMetrics {
 
 class World {
  public:
-  // Takes the MT of the organ (built by the caller from a mesh).
-  World(engine::Mt mt, const WorldDef& def);
+  // Takes the MT of the organ (built by the caller from a mesh). `blade`:
+  // the scalpel's pose at time 0, when the caller knows it (a scenario's
+  // path, a replay, the viewer's parked blade; not a live device): the
+  // frontier starts where the LOD stage would move it for that pose, so
+  // the first frames simulate the tissue near the blade as finely as the
+  // later ones, and the first frame does not pay the refiner's first pass
+  // over the MT (setup, not a frame). Without it the frontier starts at
+  // the coarsest level (the finest with LOD off).
+  World(engine::Mt mt, const WorldDef& def, const std::optional<ScalpelPose>& blade = std::nullopt);
   ~World();
 
   // Advances one frame of def.dt with the scalpel at `pose`.

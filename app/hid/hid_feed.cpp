@@ -34,6 +34,12 @@ std::vector<sim::ScalpelKeyframe> HidFeed::frame_samples(double t) {
   return samples;
 }
 
+std::optional<sim::ScalpelPose> HidFeed::start_pose() const {
+  if (input_) return std::nullopt;
+  HidPath path = path_;  // pose_at forgets what lies before its time
+  return path.pose_at(0.0);
+}
+
 void HidFeed::reached(double t, double finished) {
   while (!pending_us_.empty() && static_cast<double>(pending_us_.front()) * 1e-6 <= t) {
     latency_.add(finished - static_cast<double>(pending_us_.front()) * 1e-6);

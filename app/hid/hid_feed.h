@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <deque>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "app/hid/hid_path.h"
@@ -50,6 +51,9 @@ class HidFeed {
   void reached(double t, double finished);
   // Seconds on the input's clock since it started (live; 0 for a replay).
   double clock() const;
+  // The pose at World time 0 when it is known before the run starts: a
+  // replay's (nullopt live: the device has not been read yet).
+  std::optional<sim::ScalpelPose> start_pose() const;
 
   bool live() const { return input_ != nullptr; }
   // Faults and connections to tell the user, each once (live; none for a replay).

@@ -29,7 +29,7 @@ ViewerSession::ViewerSession(ScenarioDef scenario)
 }
 
 void ViewerSession::reset(const sim::WorldDef& def) {
-  world_ = std::make_unique<sim::World>(loaded_mt_, def);
+  world_ = std::make_unique<sim::World>(loaded_mt_, def, parked_pose());
   mouse_.release();
   last_pose_ = parked_pose();
   engaged_sweeps_ = 0;

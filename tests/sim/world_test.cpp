@@ -518,6 +518,35 @@ TEST_P(WorldMoveLatency, AFrontierMoveTakesEffectBuildFramesAfterTheBladeAskedFo
 
 INSTANTIATE_TEST_SUITE_P(BuildFrames, WorldMoveLatency, ::testing::Values(1, 2, 3));
 
+// A World told the blade's first pose starts on the frontier the LOD stage
+// asks for around it, with its springs: the first frame with that pose
+// moves nothing, and the run from there is the one a World made without
+// the pose reaches once it has taken its first move.
+TEST(World, ABladeKnownAtTheStartStartsTheFrontierAroundIt) {
+  const WorldDef def = organ_def();
+  const ScalpelPose pose{Vec3(0.02, 0, 0.06), Vec3(0.02, 0, 0.0), false};  // the tip in the organ
+  World told(organ_mt(2000), def, pose);
+  World untold(organ_mt(2000), def);
+  EXPECT_TRUE(told.validate().ok()) << told.validate().summary();
+  EXPECT_NE(sorted_tets(told.frontier()), sorted_tets(untold.frontier()));
+  EXPECT_EQ(told.model().num_particles(), told.frontier().vertices().size());
+  for (int f = 0; f <= def.lod.build_frames; ++f) untold.step(pose);
+  EXPECT_EQ(sorted_tets(told.frontier()), sorted_tets(untold.frontier()));
+  for (int f = 0; f < 5; ++f) {
+    const FrameMetrics& m = told.step(pose);
+    EXPECT_EQ(m.lod_changes, 0u) << "frame " << f;
+    EXPECT_EQ(m.springs_built, 0) << "frame " << f;
+    const auto report = told.validate();
+    ASSERT_TRUE(report.ok()) << "frame " << f << ": " << report.summary();
+  }
+  EXPECT_EQ(sorted_tets(told.frontier()), sorted_tets(untold.frontier()));
+  // With LOD off the frontier is the finest level, pose or not.
+  WorldDef fixed = def;
+  fixed.lod.enabled = false;
+  EXPECT_EQ(sorted_tets(World(organ_mt(2000), fixed, pose).frontier()),
+            sorted_tets(World(organ_mt(2000), fixed).frontier()));
+}
+
 // Two Worlds that differ only in how their springs are made take a
 // disengaged sweep and then an L stroke cut one sample per frame while the
 // frontier follows the blade. Every frame: equal state hashes, frontiers,

@@ -19,7 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-
+#include <optional>
 #include <unistd.h>
 
 #include "app/hid/recording.h"
@@ -65,12 +65,17 @@ TEST(HidFeed, EachFrameGetsEverySampleSinceTheLastFrameThenItsPose) {
   samples.push_back({80000, blade_at(-0.03, 0.0)});
   const sim::ScalpelPath whole(to_keyframes(profile, samples));
   HidFeed feed(profile, samples);
+  // A replay knows its pose at time 0 before the run starts (the World is
+  // made on the frontier around it), and telling it takes no sample away.
+  const std::optional<sim::ScalpelPose> start = feed.start_pose();
+  ASSERT_TRUE(start.has_value());
   const std::vector<double> frames = {0.0, 0.02, 0.04, 0.06, samples.back().time(), 0.1};
   std::vector<std::vector<sim::ScalpelKeyframe>> got;
   for (const double t : frames) got.push_back(feed.frame_samples(t));
 
   ASSERT_EQ(got[0].size(), 1u);  // the initial pose at time 0
   EXPECT_TRUE(same_pose(got[0][0].pose, initial_pose(profile)));
+  EXPECT_TRUE(same_pose(got[0][0].pose, *start));
   for (std::size_t f = 1; f < frames.size(); ++f) {
     // The samples in (previous frame, frame], in order, then the path's pose at the frame.
     std::vector<sim::ScalpelPose> want;
@@ -114,6 +119,7 @@ TEST(HidFeed, AnUnplugMidStrokeIsToldOnceDisengagesAndTheWorldRunsOn) {
   InputThread input(transport, load_profile("pen_tablet"), def);
   input.start();
   HidFeed feed(input, dt);
+  EXPECT_FALSE(feed.start_pose().has_value());  // live: the device has not been read
 
   // The pen reports until kFrames; the frames after it take the last
   // reports (each reaches the World in the frame after the one it is
