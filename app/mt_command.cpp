@@ -1,6 +1,7 @@
 #include "app/mt_command.h"
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -58,6 +59,11 @@ void run_mt(MtOptions& options) {
   out["collapses"] = built.report.collapses;
   out["rounds"] = built.report.rounds;
   out["preserve_boundary"] = options.build.preserve_boundary;
+  if (!options.build.preserve_boundary) {
+    if (std::isfinite(options.build.max_surface_deviation))
+      out["max_surface_deviation"] = options.build.max_surface_deviation;
+    out["coarsest_surface_deviation"] = stats.coarsest_surface_deviation;
+  }
   out["megabytes"] = static_cast<double>(stats.bytes) / (1024.0 * 1024.0);
   out["mesh_seconds"] = built.mesh_seconds;
   out["build_seconds"] = built.build_seconds;
@@ -116,7 +122,12 @@ void register_mt_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-preserve-boundary", options->no_preserve_boundary,
-                "let collapses move the surface (by at most their error)");
+                "let collapses move the surface (by at most their error and --max-surface-deviation)");
+  cmd->add_option("--max-surface-deviation", options->build.max_surface_deviation,
+                  "with --no-preserve-boundary: how far the surface may move in all, as a fraction of the mesh's "
+                  "bounding-box diagonal")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   add_mesh_input_options(*cmd, options->load, options->mesh_input);
   cmd->add_flag("--no-validate", options->skip_validation, "skip MT::validate() (large meshes)");
   cmd->add_flag("--json", options->json, "print one JSON object");

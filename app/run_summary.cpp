@@ -121,7 +121,8 @@ nlohmann::ordered_json summarize_run(const ScenarioDef& scenario, const RunRecor
   out["run_seconds"] = record.run_seconds;
   out["mt"] = {{"vertices", mt.vertices},       {"tets_total", mt.tets_total},
                {"fragments", mt.fragments},     {"dag_depth", mt.dag_depth},
-               {"finest_tets", mt.finest_tets}, {"coarsest_tets", mt.coarsest_tets}};
+               {"finest_tets", mt.finest_tets}, {"coarsest_tets", mt.coarsest_tets},
+               {"coarsest_surface_deviation", mt.coarsest_surface_deviation}};
   out["frame_ms"] = frame_dist;
   out["cut_ms"] = cut_dist;
   out["lod_ms"] = distribution(lod_ms);

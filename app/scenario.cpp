@@ -49,6 +49,10 @@ void read_mt(TomlTable& t, engine::MtBuildOptions& mt) {
     mt.target_coarsest_tets = static_cast<std::size_t>(*v);
   }
   t.read("preserve_boundary", mt.preserve_boundary);
+  t.read("max_surface_deviation", mt.max_surface_deviation);
+  if (!(mt.max_surface_deviation > 0))
+    t.fail(t.node("max_surface_deviation"),
+           "'mt.max_surface_deviation' must be a positive fraction of the mesh's bounding-box diagonal");
   t.read("collapses_per_fragment", mt.collapses_per_fragment);
   t.finish();
 }

@@ -37,6 +37,13 @@ struct Aabb {
   double max_distance(const Vec3& p) const;
 };
 
+// The box of a point set (empty for none).
+inline Aabb box_of(std::span<const Vec3> points) {
+  Aabb box;
+  for (const Vec3& p : points) box.extend(p);
+  return box;
+}
+
 // floor(log2(size)) for the `levels` of Bvh::build (a very low level for 0).
 inline std::int32_t error_level(float size) { return size > 0.0f ? std::ilogb(size) : -1000; }
 

@@ -4,8 +4,11 @@
 #include <cassert>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
+#include "absl/container/flat_hash_map.h"
 #include "engine/mt/tet_error.h"
+#include "engine/mt/triangle_index.h"
 #include "engine/tet_adjacency.h"
 #include "engine/tet_geometry.h"
 
@@ -38,11 +41,32 @@ void sort_unique(std::vector<T>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
+using FaceKey = std::array<std::int32_t, 3>;
+
+FaceKey face_key(const std::array<VertId, 3>& face) { return tri_key(face[0].value, face[1].value, face[2].value); }
+
+// The distance from p to the nearest of `faces`, or any at most `enough`.
+double distance_to_faces(const Mt& mt, const Vec3& p, std::span<const std::array<VertId, 3>> faces, double enough) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& f : faces) {
+    nearest = std::min(nearest, point_triangle_distance(p, mt.position(f[0]), mt.position(f[1]), mt.position(f[2])));
+    if (nearest <= enough) break;
+  }
+  return nearest;
+}
+
 }  // namespace
+
+struct SimplificationMesh::FineSurface {
+  TriangleIndex index;
+  std::vector<Vec3> samples;
+  absl::flat_hash_map<FaceKey, std::vector<std::int32_t>> held;  // current surface face -> its samples
+};
 
 SimplificationMesh::SimplificationMesh(Mt& mt, const CollapseOptions& options)
     : mt_(mt), options_(options), star_(mt.num_vertices()), on_boundary_(mt.num_vertices(), 0),
-      deviation_(mt.num_vertices(), 0.0f), mark_(mt.num_vertices(), 0) {
+      mark_(mt.num_vertices(), 0) {
+  std::vector<std::array<VertId, 3>> surface;
   for (std::size_t i = 0; i < mt.num_tets(); ++i) {
     const TetId t(i);
     if (!mt.alive(t) || mt.death(t).valid()) continue;
@@ -50,10 +74,37 @@ SimplificationMesh::SimplificationMesh(Mt& mt, const CollapseOptions& options)
     const Tet& v = mt.tet(t);
     for (VertId a : v) star_[a.index()].push_back(t);
     for (int f = 0; f < 4; ++f)
-      if (mt.boundary_mask(t) & (1u << f))
-        for (VertId a : face_vertices(v, f)) on_boundary_[a.index()] = 1;
+      if (mt.boundary_mask(t) & (1u << f)) {
+        surface.push_back(face_vertices(v, f));
+        for (VertId a : surface.back()) on_boundary_[a.index()] = 1;
+      }
+  }
+  if (options_.preserve_boundary) return;
+  // The fine surface's samples: each vertex, edge midpoint and centroid,
+  // held by the first face that has it.
+  std::vector<Triangle> triangles;
+  triangles.reserve(surface.size());
+  for (const auto& f : surface) triangles.push_back({mt.position(f[0]), mt.position(f[1]), mt.position(f[2])});
+  fine_ = std::make_unique<FineSurface>(FineSurface{TriangleIndex(std::move(triangles)), {}, {}});
+  std::vector<char> vertex_taken(mt.num_vertices(), 0);
+  absl::flat_hash_map<std::uint64_t, char> edge_taken;
+  for (const auto& f : surface) {
+    std::vector<std::int32_t>& held = fine_->held[face_key(f)];
+    const auto add = [&](const Vec3& p) {
+      held.push_back(static_cast<std::int32_t>(fine_->samples.size()));
+      fine_->samples.push_back(p);
+    };
+    const Vec3 &a = mt.position(f[0]), &b = mt.position(f[1]), &c = mt.position(f[2]);
+    for (int k = 0; k < 3; ++k) {
+      if (!std::exchange(vertex_taken[f[k].index()], 1)) add(mt.position(f[k]));
+      if (!std::exchange(edge_taken[edge_key(f[k].value, f[(k + 1) % 3].value)], 1))
+        add(0.5 * (mt.position(f[k]) + mt.position(f[(k + 1) % 3])));
+    }
+    add((a + b + c) / 3.0);
   }
 }
+
+SimplificationMesh::~SimplificationMesh() = default;
 
 void SimplificationMesh::ring(VertId v, std::vector<VertId>& out) const {
   out.clear();
@@ -170,9 +221,9 @@ float SimplificationMesh::cost_of(VertId v, VertId w, StarInfo& info, float boun
     cost = std::max(cost, tet_error(a, b, c, d));
     if (cost >= bound) return kInvalid;  // not better than a collapse already found
   }
-  if (surface_move && !options_.preserve_boundary) {
-    const double distance = surface_distance(v, w, info);
-    if (!std::isfinite(distance) || distance + deviation_[v.index()] > cost) {
+  if (surface_move && fine_) {
+    const double limit = std::min(static_cast<double>(cost), options_.max_surface_deviation);
+    if (!(surface_moved_by(v, w, info, limit) <= limit)) {
       ++rejections_.boundary;
       return kInvalid;
     }
@@ -180,16 +231,37 @@ float SimplificationMesh::cost_of(VertId v, VertId w, StarInfo& info, float boun
   return cost;
 }
 
-double SimplificationMesh::surface_distance(VertId v, VertId w, const StarInfo& info) const {
-  const Vec3& pv = mt_.position(v);
-  double distance = std::numeric_limits<double>::infinity();
+void SimplificationMesh::moved_faces(VertId v, VertId w, const StarInfo& info,
+                                     std::vector<std::array<VertId, 3>>& out) const {
+  out.clear();
   for (const auto& face : info.surface) {
     if (face[0] == w || face[1] == w || face[2] == w) continue;
-    std::array<Vec3, 3> moved;
-    for (int k = 0; k < 3; ++k) moved[k] = mt_.position(face[k] == v ? w : face[k]);
-    distance = std::min(distance, point_triangle_distance(pv, moved[0], moved[1], moved[2]));
+    out.push_back(face);
+    for (VertId& a : out.back())
+      if (a == v) a = w;
   }
-  return distance;
+}
+
+double SimplificationMesh::surface_moved_by(VertId v, VertId w, const StarInfo& info, double limit) {
+  moved_faces(v, w, info, moved_);
+  if (moved_.empty()) return std::numeric_limits<double>::infinity();
+  double worst = 0.0;
+  for (const auto& f : moved_) {
+    const Vec3 &a = mt_.position(f[0]), &b = mt_.position(f[1]), &c = mt_.position(f[2]);
+    for (const Vec3& p : {Vec3(0.5 * (a + b)), Vec3(0.5 * (b + c)), Vec3(0.5 * (c + a)), Vec3((a + b + c) / 3.0)}) {
+      worst = std::max(worst, fine_->index.distance(p, std::nextafter(limit, HUGE_VAL), worst));
+      if (worst > limit) return worst;
+    }
+  }
+  for (const auto& face : info.surface) {
+    const auto it = fine_->held.find(face_key(face));
+    if (it == fine_->held.end()) continue;
+    for (std::int32_t sample : it->second) {
+      worst = std::max(worst, distance_to_faces(mt_, fine_->samples[static_cast<std::size_t>(sample)], moved_, worst));
+      if (worst > limit) return worst;
+    }
+  }
+  return worst;
 }
 
 bool SimplificationMesh::link_condition(VertId v, VertId w) {
@@ -313,11 +385,29 @@ CollapseChoice SimplificationMesh::check_collapse(VertId v, VertId target) {
 }
 
 FragId SimplificationMesh::apply(VertId v, VertId w, FragId into) {
-  // How far the surface moves here (for later collapses' deviation).
-  float moved_by = 0.0f;
-  if (!options_.preserve_boundary && on_boundary(v)) {
+  // The fine surface's samples that the faces around v hold go to the
+  // nearest of the faces the collapse makes.
+  if (fine_ && on_boundary(v)) {
     describe_star(v, info_);
-    moved_by = static_cast<float>(surface_distance(v, w, info_)) + deviation_[v.index()];
+    moved_faces(v, w, info_, moved_);
+    loose_.clear();
+    for (const auto& face : info_.surface)
+      if (const auto it = fine_->held.find(face_key(face)); it != fine_->held.end()) {
+        loose_.insert(loose_.end(), it->second.begin(), it->second.end());
+        fine_->held.erase(it);
+      }
+    assert((loose_.empty() || !moved_.empty()) && "a surface collapse makes no surface face");
+    for (std::int32_t sample : loose_) {
+      const Vec3& p = fine_->samples[static_cast<std::size_t>(sample)];
+      std::size_t nearest = 0;
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < moved_.size(); ++k) {
+        const auto& f = moved_[k];
+        const double d = point_triangle_distance(p, mt_.position(f[0]), mt_.position(f[1]), mt_.position(f[2]));
+        if (d < best) best = d, nearest = k;
+      }
+      fine_->held[face_key(moved_[nearest])].push_back(sample);
+    }
   }
 
   const FragId fragment = into.valid() ? into : mt_.add_fragment();
@@ -371,11 +461,6 @@ FragId SimplificationMesh::apply(VertId v, VertId w, FragId into) {
       if (holders == 1) mask |= static_cast<FaceMask>(1u << f);
     }
     mt_.set_boundary_mask(t, mask);
-    if (moved_by > 0.0f)
-      for (int f = 0; f < 4; ++f)
-        if (mask & (1u << f))
-          for (VertId a : face_vertices(verts, f))
-            deviation_[a.index()] = std::max(deviation_[a.index()], moved_by);
   }
   return fragment;
 }

@@ -15,15 +15,29 @@
 //  - the boundary does not move beyond the error: with preserve_boundary a
 //    surface vertex only slides within its flat face region or along a
 //    straight crease (exact coplanarity), so every frontier covers exactly
-//    the fine domain; without it, the distance of v from the new surface,
-//    accumulated over earlier moves nearby, must not exceed the error of the
-//    collapse,
+//    the fine domain; without it, the surface the collapse makes must lie
+//    within the error of the collapse and max_surface_deviation of the fine
+//    surface, both ways (below),
 //  - no tet of Sigma_i has a worse shape than min_quality (or than the worst
 //    tet it replaces, if that is already worse).
 // Its cost is the error of the fragment it makes: the largest e(t) of
 // Sigma_i (tet_error.h).
+//
+// How far a surface move goes, measured against the fine surface (not summed
+// over moves, which bounds one way only: a coarse face can pass farther from
+// the fine surface than the vertices it lost). Both ways are checked at
+// samples, the same ones surface_deviation.h measures a level by: the new
+// faces' edge midpoints and centroids (their corners are fine vertices) to
+// the fine surface, through an index over its triangles; and every sample
+// of the fine surface (its vertices, edge midpoints and centroids) to the
+// current face it was last checked against, each sample held by one face,
+// so a collapse checks the samples of the faces it removes against the
+// faces it makes, and each goes to the nearest of them. So every level's
+// surface lies within max_surface_deviation of the fine surface, both ways,
+// at those samples.
 
 #include <limits>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -34,6 +48,8 @@ namespace mtcut::engine {
 struct CollapseOptions {
   bool preserve_boundary = true;
   double min_quality = 0.05;  // tet_quality of the tets a collapse makes
+  // Metres the surface may move in all (preserve_boundary off).
+  double max_surface_deviation = std::numeric_limits<double>::infinity();
 };
 
 // Why candidate collapses were turned down (diagnostics; a candidate can be
@@ -56,6 +72,7 @@ class SimplificationMesh {
   // Takes the MT's live tets that have no death yet (the builder's start: the
   // fine mesh under the root).
   SimplificationMesh(Mt& mt, const CollapseOptions& options);
+  ~SimplificationMesh();
 
   std::size_t live_tets() const { return live_tets_; }
   bool on_boundary(VertId v) const { return on_boundary_[v.index()] != 0; }
@@ -93,15 +110,21 @@ class SimplificationMesh {
   void describe_star(VertId v, StarInfo& info);
   float cost_of(VertId v, VertId target, StarInfo& info, float bound);
   double worst_quality(VertId v, StarInfo& info) const;
-  // How far v lies from the surface that replaces the one around it (+inf
-  // when no surface face survives the collapse).
-  double surface_distance(VertId v, VertId w, const StarInfo& info) const;
+  // The surface faces v -> w makes (the faces of v's star on the surface,
+  // v moved to w, those already holding w dropped), into `out`.
+  void moved_faces(VertId v, VertId w, const StarInfo& info, std::vector<std::array<VertId, 3>>& out) const;
+  // How far the surface v -> w makes lies from the fine surface, both ways
+  // (at the samples above), stopping early past `limit` (+inf when no face
+  // is made).
+  double surface_moved_by(VertId v, VertId w, const StarInfo& info, double limit);
 
   Mt& mt_;
   CollapseOptions options_;
   std::vector<std::vector<TetId>> star_;  // (n_vertices) live tets holding the vertex
   std::vector<char> on_boundary_;         // (n_vertices) on the surface of the fine mesh
-  std::vector<float> deviation_;          // (n_vertices) surface moved near it so far (preserve_boundary off)
+  // The fine surface and its samples (preserve_boundary off: surface_moved_by).
+  struct FineSurface;
+  std::unique_ptr<FineSurface> fine_;
   std::size_t live_tets_ = 0;
   CollapseRejections rejections_;
 
@@ -114,6 +137,8 @@ class SimplificationMesh {
   mutable std::vector<std::uint32_t> mark_;  // (n_vertices) == stamp_: in the set being built
   mutable std::uint32_t stamp_ = 0;
   std::vector<TetId> old_star_, new_tets_;
+  std::vector<std::array<VertId, 3>> moved_;
+  std::vector<std::int32_t> loose_;
   struct MadeTet {
     Tet verts;
     double longest;  // longest edge

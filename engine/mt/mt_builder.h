@@ -33,8 +33,14 @@ struct MtBuildOptions {
   std::size_t max_collapses = 0;
   // Keep the surface exactly (flat regions and straight creases may still be
   // simplified); every frontier then has the fine mesh's volume. Off: the
-  // surface may move by up to the error of each collapse.
+  // surface may move by up to the error of each collapse and
+  // max_surface_deviation, from the fine surface (collapse.h).
   bool preserve_boundary = true;
+  // With preserve_boundary off: how far the surface may move in all, as a
+  // fraction of the fine mesh's bounding-box diagonal (every level's
+  // surface then lies within it of the fine one; each collapse's move is
+  // also bounded by its error). Infinite: by the collapses' errors alone.
+  double max_surface_deviation = 0.01;
   // Smallest tet_quality a collapse may create (or the worst quality of the
   // tets it replaces, when that is lower).
   double min_quality = 0.05;

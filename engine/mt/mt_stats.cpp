@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "engine/mt/bvh.h"
+#include "engine/mt/surface_deviation.h"
+
 namespace mtcut::engine {
 
 MtStats compute_mt_stats(const Mt& mt) {
@@ -21,6 +24,14 @@ MtStats compute_mt_stats(const Mt& mt) {
       if (c.valid()) depth[c.index()] = std::max(depth[c.index()], depth[f.index()] + 1);
     }
   if (mt.drain().valid()) stats.dag_depth = depth[mt.drain().index()];
+  if (const double deviation = coarsest_surface_deviation(mt); deviation > 0) {
+    std::vector<Vec3> finest;
+    for (TetId t : mt.created(mt.root()))
+      if (mt.alive(t))
+        for (VertId v : mt.tet(t)) finest.push_back(mt.position(v));
+    const Aabb box = box_of(finest);
+    stats.coarsest_surface_deviation = deviation / (box.hi - box.lo).norm();
+  }
   return stats;
 }
 

@@ -15,6 +15,10 @@ struct MtStats {
   std::size_t finest_tets = 0;    // tets the root creates
   std::size_t coarsest_tets = 0;  // tets the drain replaces
   std::size_t bytes = 0;          // heap memory of the MT
+  // How far the coarsest level's surface lies from the finest's
+  // (surface_deviation.h), as a fraction of the finest mesh's bounding-box
+  // diagonal: 0 with the boundary preserved.
+  double coarsest_surface_deviation = 0;
 };
 
 MtStats compute_mt_stats(const Mt& mt);

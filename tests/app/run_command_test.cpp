@@ -196,6 +196,8 @@ TEST_F(RunCommand, BadScenariosGiveOneLineWithFileAndLine) {
   expect_rejected(variant("tets = 8000", "tets = \"many\""), "'mesh.tets' must be an integer");
   expect_rejected(variant("source = \"builtin:ellipsoid\"", "source = \"no_such_organ.obj\""), "does not exist");
   expect_rejected(variant("dt = 0.016666666666666666", "dt = -0.01"), "'run.dt' must be positive");
+  expect_rejected(variant("[mt]\n", "[mt]\nmax_surface_deviation = 0.0\n"),
+                  "'mt.max_surface_deviation' must be a positive fraction");
   expect_rejected("[mesh]\nsource = \"builtin:box\"\n[scalpel]\n", "needs at least one [[scalpel.keyframes]]");
   expect_rejected(variant("source = \"builtin:ellipsoid\"",
                           "source = \"" + shared_mesh("liver_for_test_broken.vtk") + "\""),
