@@ -189,6 +189,31 @@ TEST(StepperBar, HangingBarSettlesAlikeAtTheCoarsestAndFinestFrontier) {
                                                  << " tets), fine " << fine << " (" << finest.tets().size() << " tets)";
 }
 
+// The same with a curved bar whose MT frees its boundary (issue 38): at the
+// coarsest level its surface lies within 1% of the bar's diagonal, and the
+// spring model on those few tets must still hang like the fine one.
+TEST(StepperBar, HangingCylinderSettlesAlikeAtTheFinestAndTheFreeBoundarysCoarsestFrontier) {
+  const double length = 0.2;
+  engine::MeshLoadDef def;
+  def.builtin_tets = 3000;
+  def.builtin_size = Vec3(0.03, 0.03, length);
+  const engine::TetMesh bar = engine::load_mesh("builtin:cylinder", def).mesh;
+  engine::MtBuildOptions options;
+  options.preserve_boundary = false;
+  options.max_surface_deviation = 0.01;
+  const engine::Mt mt = engine::build_mt(bar, options);
+  const engine::Frontier finest = engine::Frontier::finest(mt), coarsest = engine::Frontier::coarsest(mt);
+  ASSERT_LT(coarsest.tets().size() * 4, finest.tets().size()) << "the MT does not simplify the bar";
+  const double fine = hanging_elongation(mt, finest, length);
+  const double coarse = hanging_elongation(mt, coarsest, length);
+  std::printf("cylinder elongation: fine %.4g m (%zu tets), coarse %.4g m (%zu tets)\n", fine, finest.tets().size(),
+              coarse, coarsest.tets().size());
+  EXPECT_GT(fine, 0.0005);
+  EXPECT_LT(fine, 0.01);
+  EXPECT_LT(std::abs(coarse - fine), 0.2 * fine) << "coarse " << coarse << " (" << coarsest.tets().size()
+                                                 << " tets), fine " << fine << " (" << finest.tets().size() << " tets)";
+}
+
 // A jittered, moving state of a stiff box with its x = +0.05 face fixed, and
 // its implicit system at dt = 1/60.
 test::JitteredSystem system_case(bool shuffle_springs) {
