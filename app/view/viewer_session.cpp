@@ -28,14 +28,16 @@ ViewerSession::ViewerSession(ScenarioDef scenario)
   reset(scenario_.world);
 }
 
-void ViewerSession::reset(const sim::WorldDef& def) {
-  world_ = std::make_unique<sim::World>(loaded_mt_, def, parked_pose());
+void ViewerSession::reset(const sim::WorldDef& def) { start_world(def, false); }
+
+void ViewerSession::start_world(const sim::WorldDef& def, bool replaying) {
+  replaying_ = replaying;  // a reset ends a replay...
+  world_ = std::make_unique<sim::World>(loaded_mt_, def, start_pose());
   mouse_.release();
   last_pose_ = parked_pose();
   engaged_sweeps_ = 0;
   last_step_time_ = -std::numeric_limits<double>::infinity();
-  replaying_ = false;   // a reset ends a replay...
-  recorded_.clear();    // ...and starts a recording again from time 0
+  recorded_.clear();  // ...and starts a recording again from time 0
   topology_stale_ = true;
   levels_revision_ = UINT64_MAX;
   refresh_surface();
@@ -49,6 +51,13 @@ sim::ScalpelPose ViewerSession::parked_pose() const {
   pose.tip = engine::Vec3(centre.x, centre.y, hi_.z + 0.75 * height);
   pose.engaged = false;
   return pose;
+}
+
+std::optional<sim::ScalpelPose> ViewerSession::start_pose() const {
+  if (replaying_) return replay_.pose_at(0.0);
+  if (hid_) return std::nullopt;
+  if (settings_.play_script && !scenario_.scalpel.empty()) return scenario_.scalpel.pose_at(0.0);
+  return parked_pose();
 }
 
 std::vector<sim::ScalpelPose> ViewerSession::next_poses() {
@@ -120,8 +129,7 @@ std::size_t ViewerSession::stop_recording(const std::string& path) {
 void ViewerSession::replay_trace(const std::string& path) {
   replay_ = sim::read_scalpel_trace(path);
   recording_ = false;
-  reset();
-  replaying_ = true;
+  start_world(world_->def(), true);
 }
 
 void ViewerSession::refresh_surface() {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -109,8 +110,15 @@ class ViewerSession {
   const glm::dvec3& lo() const { return lo_; }
   const glm::dvec3& hi() const { return hi_; }
   sim::ScalpelPose parked_pose() const;
+  // The blade's pose at time 0 as next_poses() gives it before the mouse
+  // drives it (nullopt with a device: not read yet): the World starts on
+  // the frontier around it.
+  std::optional<sim::ScalpelPose> start_pose() const;
 
  private:
+  // Makes the World from the MT as loaded with `def`, time 0, a replay of
+  // replay_ or not.
+  void start_world(const sim::WorldDef& def, bool replaying);
   ScenarioDef scenario_;
   engine::Mt loaded_mt_;
   std::size_t loaded_vertices_ = 0;

@@ -1,11 +1,11 @@
 #pragma once
 // How far a level's surface lies from the fine one, measured.
 //
-// Why measured. With the boundary not preserved, the builder bounds each
-// collapse's move of the surface by the moves before it nearby
-// (collapse.h): a bound, summed, not the distance. The figure a user reads
-// (how far the coarsest tissue's outline is from the organ) is the
-// distance itself: the two-sided (Hausdorff) distance between the outer
+// Why measured. With the boundary not preserved, the builder checks each
+// collapse's move of the surface at samples against the fine surface
+// (collapse.h); this measures the result the same way, on its own, so that
+// a user (and the tests) read how far the coarsest tissue's outline lies
+// from the organ: the two-sided (Hausdorff) distance between the outer
 // surfaces of the finest and the coarsest level, each surface sampled at
 // its triangles' corners, edge midpoints and centroids and each sample's
 // distance taken to the nearest triangle of the other (an index over

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include "app/hid/profile_file.h"
 #include "app/view/viewer_input.h"
@@ -63,6 +64,25 @@ TEST(ViewerSessionTrace, ARecordedMouseStrokeReplaysToTheSameWorld) {
   s.reset();
   EXPECT_FALSE(s.replaying());
   std::filesystem::remove(trace);
+}
+
+// The World starts on the frontier around the blade's pose at time 0, the
+// one its first frame gets: the scenario's path while it plays, else the
+// parked blade; so the first frame moves no frontier.
+TEST(ViewerSessionStart, TheWorldStartsAroundTheBladesFirstPose) {
+  ViewerSession s(coarse_default());
+  for (const bool script : {true, false}) {
+    s.settings().play_script = script;
+    s.reset();
+    const std::optional<sim::ScalpelPose> start = s.start_pose();
+    ASSERT_TRUE(start.has_value());
+    const sim::ScalpelPose expected = script ? s.scenario().scalpel.pose_at(0.0) : s.parked_pose();
+    EXPECT_EQ(start->base, expected.base);
+    EXPECT_EQ(start->tip, expected.tip);
+    const sim::FrameMetrics& first = s.step();
+    EXPECT_EQ(first.lod_changes, 0u) << (script ? "script" : "parked");
+    EXPECT_EQ(first.springs_built, 0) << (script ? "script" : "parked");
+  }
 }
 
 TEST(ViewerSessionTrace, ABadTraceIsAnInputErrorAndTheSessionGoesOn) {
