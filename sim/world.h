@@ -95,7 +95,7 @@ class World {
  public:
   // Takes the MT of the organ (built by the caller from a mesh). `blade`:
   // the scalpel's pose at time 0, when the caller knows it (a scenario's
-  // path, a replay, the viewer's parked blade; not a live device): the
+  // path, a replay, the viewer's first pose; not a live device): the
   // frontier starts where the LOD stage would move it for that pose, so
   // the first frames simulate the tissue near the blade as finely as the
   // later ones, and the first frame does not pay the refiner's first pass
