@@ -31,7 +31,7 @@ ViewerSession::ViewerSession(ScenarioDef scenario)
 void ViewerSession::reset(const sim::WorldDef& def) { start_world(def, false); }
 
 void ViewerSession::start_world(const sim::WorldDef& def, bool replaying) {
-  replaying_ = replaying;  // a reset ends a replay...
+  replaying_ = replaying;  // start_pose() reads it; a reset ends a replay...
   world_ = std::make_unique<sim::World>(loaded_mt_, def, start_pose());
   mouse_.release();
   last_pose_ = parked_pose();

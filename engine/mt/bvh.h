@@ -29,6 +29,7 @@ struct Aabb {
   bool contains(const Vec3& p) const { return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all(); }
   bool overlaps(const Aabb& b) const { return (lo.array() <= b.hi.array()).all() && (b.lo.array() <= hi.array()).all(); }
   Vec3 center() const { return 0.5 * (lo + hi); }
+  double diagonal() const { return empty() ? 0.0 : (hi - lo).norm(); }
   double volume() const { return empty() ? 0.0 : (hi - lo).prod(); }
   // Distance from p to the nearest / farthest point of the box. Both are
   // monotone under box inclusion in floating point too (a box inside

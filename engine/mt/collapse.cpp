@@ -45,12 +45,14 @@ using FaceKey = std::array<std::int32_t, 3>;
 
 FaceKey face_key(const std::array<VertId, 3>& face) { return tri_key(face[0].value, face[1].value, face[2].value); }
 
-// The distance from p to the nearest of `faces`, or any at most `enough`.
-double distance_to_faces(const Mt& mt, const Vec3& p, std::span<const std::array<VertId, 3>> faces, double enough) {
-  double nearest = std::numeric_limits<double>::infinity();
-  for (const auto& f : faces) {
-    nearest = std::min(nearest, point_triangle_distance(p, mt.position(f[0]), mt.position(f[1]), mt.position(f[2])));
-    if (nearest <= enough) break;
+// The nearest of `faces` to p and its distance, or the first within `enough`.
+std::pair<std::size_t, double> nearest_face(const Mt& mt, const Vec3& p, std::span<const std::array<VertId, 3>> faces,
+                                            double enough = -1.0) {
+  std::pair<std::size_t, double> nearest{0, std::numeric_limits<double>::infinity()};
+  for (std::size_t k = 0; k < faces.size() && nearest.second > enough; ++k) {
+    const auto& f = faces[k];
+    const double d = point_triangle_distance(p, mt.position(f[0]), mt.position(f[1]), mt.position(f[2]));
+    if (d < nearest.second) nearest = {k, d};
   }
   return nearest;
 }
@@ -257,7 +259,7 @@ double SimplificationMesh::surface_moved_by(VertId v, VertId w, const StarInfo& 
     const auto it = fine_->held.find(face_key(face));
     if (it == fine_->held.end()) continue;
     for (std::int32_t sample : it->second) {
-      worst = std::max(worst, distance_to_faces(mt_, fine_->samples[static_cast<std::size_t>(sample)], moved_, worst));
+      worst = std::max(worst, nearest_face(mt_, fine_->samples[static_cast<std::size_t>(sample)], moved_, worst).second);
       if (worst > limit) return worst;
     }
   }
@@ -398,14 +400,7 @@ FragId SimplificationMesh::apply(VertId v, VertId w, FragId into) {
       }
     assert((loose_.empty() || !moved_.empty()) && "a surface collapse makes no surface face");
     for (std::int32_t sample : loose_) {
-      const Vec3& p = fine_->samples[static_cast<std::size_t>(sample)];
-      std::size_t nearest = 0;
-      double best = std::numeric_limits<double>::infinity();
-      for (std::size_t k = 0; k < moved_.size(); ++k) {
-        const auto& f = moved_[k];
-        const double d = point_triangle_distance(p, mt_.position(f[0]), mt_.position(f[1]), mt_.position(f[2]));
-        if (d < best) best = d, nearest = k;
-      }
+      const std::size_t nearest = nearest_face(mt_, fine_->samples[static_cast<std::size_t>(sample)], moved_).first;
       fine_->held[face_key(moved_[nearest])].push_back(sample);
     }
   }

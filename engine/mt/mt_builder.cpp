@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <span>
 #include <utility>
 #include <vector>
 
@@ -13,18 +12,13 @@
 namespace mtcut::engine {
 namespace {
 
-double bounding_diagonal(std::span<const Vec3> positions) {
-  const Aabb box = box_of(positions);
-  return box.empty() ? 0.0 : (box.hi - box.lo).norm();
-}
-
 // The rounds of simplification over one working mesh.
 class Builder {
  public:
   Builder(Mt& mt, const MtBuildOptions& options)
       : options_(options),
         mesh_(mt, {options.preserve_boundary, options.min_quality,
-                   options.max_surface_deviation * bounding_diagonal(mt.positions())}),
+                   options.max_surface_deviation * box_of(mt.positions()).diagonal()}),
         choice_(mt.num_vertices()),
         dirty_(mt.num_vertices(), 1),
         stale_(mt.num_vertices(), 0),

@@ -24,14 +24,9 @@ MtStats compute_mt_stats(const Mt& mt) {
       if (c.valid()) depth[c.index()] = std::max(depth[c.index()], depth[f.index()] + 1);
     }
   if (mt.drain().valid()) stats.dag_depth = depth[mt.drain().index()];
-  if (const double deviation = coarsest_surface_deviation(mt); deviation > 0) {
-    std::vector<Vec3> finest;
-    for (TetId t : mt.created(mt.root()))
-      if (mt.alive(t))
-        for (VertId v : mt.tet(t)) finest.push_back(mt.position(v));
-    const Aabb box = box_of(finest);
-    stats.coarsest_surface_deviation = deviation / (box.hi - box.lo).norm();
-  }
+  // Of the diagonal the builder's bound is a fraction of (mt_builder.h).
+  if (const double deviation = coarsest_surface_deviation(mt); deviation > 0)
+    stats.coarsest_surface_deviation = deviation / box_of(mt.positions()).diagonal();
   return stats;
 }
 

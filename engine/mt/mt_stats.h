@@ -16,8 +16,8 @@ struct MtStats {
   std::size_t coarsest_tets = 0;  // tets the drain replaces
   std::size_t bytes = 0;          // heap memory of the MT
   // How far the coarsest level's surface lies from the finest's
-  // (surface_deviation.h), as a fraction of the finest mesh's bounding-box
-  // diagonal: 0 with the boundary preserved.
+  // (surface_deviation.h), as a fraction of the MT's bounding-box diagonal
+  // (MtBuildOptions::max_surface_deviation's): 0 with the boundary preserved.
   double coarsest_surface_deviation = 0;
 };
 

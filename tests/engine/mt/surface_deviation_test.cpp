@@ -28,10 +28,7 @@ Mt build(const std::string& mesh, double max_surface_deviation) {
   return build_mt(test_mesh(mesh), options);
 }
 
-double diagonal(const TetMesh& mesh) {
-  const Aabb box = box_of(mesh.positions);
-  return (box.hi - box.lo).norm();
-}
+double diagonal(const TetMesh& mesh) { return box_of(mesh.positions).diagonal(); }
 
 // The farthest vertex of the finest surface from the coarsest surface, over
 // every coarsest triangle (no index): a lower bound of the measured figure.
