@@ -128,7 +128,7 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
 
   write_metrics_csv((dir / "metrics.csv").string(), rows);
   if (!scenario.frames_path.empty()) write_stage_csv((dir / scenario.frames_path).string(), rows);
-  write_deformed_surface(world, (dir / "surface.obj").string());
+  write_deformed_surface(world, (dir / "surface.obj").string(), scenario.surface);
   if (!options.record_path.empty()) sim::write_scalpel_trace(options.record_path, samples);
 
   RunResult result;

@@ -11,6 +11,7 @@
 #include "engine/atomic_file.h"
 #include "engine/io/mesh_file.h"
 #include "engine/surface_mesh.h"
+#include "sim/finest_surface.h"
 
 namespace mtcut::app {
 
@@ -82,8 +83,13 @@ void SnapshotSeries::write_collection() const {
   });
 }
 
-void write_deformed_surface(const sim::World& world, const std::string& path) {
-  engine::write_surface_file(engine::extract_boundary(deform_frontier(world).mesh), path);
+void write_deformed_surface(const sim::World& world, const std::string& path, SurfaceOutput which) {
+  if (which == SurfaceOutput::kFrontier) {
+    engine::write_surface_file(engine::extract_boundary(deform_frontier(world).mesh), path);
+    return;
+  }
+  const sim::FinestSurface surface = sim::carry_finest_surface(world.mt(), world.frontier(), world.model());
+  engine::write_surface_file(sim::deformed_finest_surface(surface, world.state().x), path);
 }
 
 }  // namespace mtcut::app

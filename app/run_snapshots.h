@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/scenario.h"
 #include "engine/tet_mesh.h"
 #include "sim/world.h"
 
@@ -50,8 +51,9 @@ class SnapshotSeries {
   std::int64_t last_frame_ = -1;
 };
 
-// The boundary surface of the deformed frontier (all pieces) as a surface
-// file (.obj), atomically.
-void write_deformed_surface(const sim::World& world, const std::string& path);
+// The deformed surface of every piece as a surface file (.obj),
+// atomically: the finest surface carried by the frontier, or the
+// frontier's own (SurfaceOutput).
+void write_deformed_surface(const sim::World& world, const std::string& path, SurfaceOutput which);
 
 }  // namespace mtcut::app

@@ -224,6 +224,14 @@ ScenarioDef load_scenario(const std::string& path) {
     out->read("frames", s.frames_path);
     out->read("snapshot_every", s.snapshot_every);
     if (s.snapshot_every < 0) out->fail(out->node("snapshot_every"), "'output.snapshot_every' must be >= 0");
+    std::string surface = "finest";
+    out->read("surface", surface);
+    if (surface == "finest")
+      s.surface = SurfaceOutput::kFinest;
+    else if (surface == "frontier")
+      s.surface = SurfaceOutput::kFrontier;
+    else
+      out->fail(out->node("surface"), "'output.surface' must be \"finest\" or \"frontier\"");
     out->finish();
   }
   top.finish();

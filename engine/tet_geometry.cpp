@@ -44,6 +44,16 @@ double signed_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
   return (b - a).cross(c - a).dot(d - a) / 6.0;
 }
 
+std::array<double, 4> barycentric(const std::array<Vec3, 4>& c, const Vec3& p) {
+  const double total = signed_volume(c[0], c[1], c[2], c[3]);
+  std::array<double, 4> w{};
+  w[0] = signed_volume(p, c[1], c[2], c[3]) / total;
+  w[1] = signed_volume(c[0], p, c[2], c[3]) / total;
+  w[2] = signed_volume(c[0], c[1], p, c[3]) / total;
+  w[3] = 1.0 - w[0] - w[1] - w[2];
+  return w;
+}
+
 std::array<double, 6> dihedral_angles(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const std::array<Vec3, 4> p = {a, b, c, d};
   // Outward face normals (unnormalised), face i opposite vertex i.

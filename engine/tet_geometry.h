@@ -21,6 +21,10 @@ inline constexpr std::array<std::array<int, 2>, 6> kTetEdges = {{
 // Signed volume: positive when (a, b, c, d) is positively oriented.
 double signed_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+// Barycentric coordinates of p in the tet with corners c (summing to 1;
+// some negative when p lies outside: the tet's affine map extended).
+std::array<double, 4> barycentric(const std::array<Vec3, 4>& c, const Vec3& p);
+
 // The six interior dihedral angles in radians, in kTetEdges order.
 std::array<double, 6> dihedral_angles(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 

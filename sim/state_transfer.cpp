@@ -11,17 +11,7 @@ namespace mtcut::sim {
 namespace {
 
 using engine::TetId;
-
-// Barycentric coordinates of p in the tet with corners c (rest space).
-std::array<double, 4> barycentric(const std::array<Vec3, 4>& c, const Vec3& p) {
-  const double total = engine::signed_volume(c[0], c[1], c[2], c[3]);
-  std::array<double, 4> w{};
-  w[0] = engine::signed_volume(p, c[1], c[2], c[3]) / total;
-  w[1] = engine::signed_volume(c[0], p, c[2], c[3]) / total;
-  w[2] = engine::signed_volume(c[0], c[1], p, c[3]) / total;
-  w[3] = 1.0 - w[0] - w[1] - w[2];
-  return w;
-}
+using engine::barycentric;
 
 enum class Source { kKept, kInterpolated, kWalked, kCut, kExtrapolated };
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/run_summary.h"
+#include "engine/surface_mesh.h"
 #include "tests/app/run_fixture.h"
 #include "tests/app/run_mtcut.h"
 #include "tests/test_paths.h"
@@ -198,6 +199,8 @@ TEST_F(RunCommand, BadScenariosGiveOneLineWithFileAndLine) {
   expect_rejected(variant("dt = 0.016666666666666666", "dt = -0.01"), "'run.dt' must be positive");
   expect_rejected(variant("[mt]\n", "[mt]\nmax_surface_deviation = 0.0\n"),
                   "'mt.max_surface_deviation' must be a positive fraction");
+  expect_rejected(variant("surface = \"finest\"", "surface = \"coarse\""),
+                  "'output.surface' must be \"finest\" or \"frontier\"");
   expect_rejected("[mesh]\nsource = \"builtin:box\"\n[scalpel]\n", "needs at least one [[scalpel.keyframes]]");
   expect_rejected(variant("source = \"builtin:ellipsoid\"",
                           "source = \"" + shared_mesh("liver_for_test_broken.vtk") + "\""),
@@ -206,6 +209,27 @@ TEST_F(RunCommand, BadScenariosGiveOneLineWithFileAndLine) {
   const CommandResult missing = run_mtcut("run " + quoted(path("nothing.toml")));
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.err.find("nothing.toml: no such file"), std::string::npos) << missing.err;
+}
+
+// surface.obj shows the organ's finest surface, carried by the simulated
+// frontier, unless [output] asks for the frontier's own: with a free
+// boundary the coarse frontier far from the blade has fewer surface
+// vertices, and lies off the fine surface; both are closed.
+TEST_F(RunCommand, TheSurfaceWrittenIsTheFinestUnlessTheFrontiersIsAskedFor) {
+  const std::string free_boundary = variant("preserve_boundary = true", "preserve_boundary = false");
+  const auto surface_of = [&](const std::string& name, const std::string& text) {
+    const std::string scenario = write(name + ".toml", text);
+    expect_valid_run(quoted(scenario) + " --frames 3", path(name));
+    return engine::read_surface_file(path(name + "/surface.obj"));
+  };
+  const engine::SurfaceMesh finest = surface_of("finest", free_boundary);
+  std::string frontier_text = free_boundary;
+  const std::string finest_key = "surface = \"finest\"";
+  frontier_text.replace(frontier_text.find(finest_key), finest_key.size(), "surface = \"frontier\"");
+  const engine::SurfaceMesh frontier = surface_of("frontier", frontier_text);
+  EXPECT_EQ(finest.count_open_edges(), 0u);
+  EXPECT_EQ(frontier.count_open_edges(), 0u);
+  EXPECT_GT(finest.positions.size(), 2 * frontier.positions.size());
 }
 
 // A mesh file's unit: named or in metres, never both, never with a builtin
