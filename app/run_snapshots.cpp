@@ -83,8 +83,8 @@ void SnapshotSeries::write_collection() const {
   });
 }
 
-void write_deformed_surface(const sim::World& world, const std::string& path, SurfaceOutput which) {
-  if (which == SurfaceOutput::kFrontier) {
+void write_deformed_surface(const sim::World& world, const std::string& path, SurfaceKind which) {
+  if (which == SurfaceKind::kFrontier) {
     engine::write_surface_file(engine::extract_boundary(deform_frontier(world).mesh), path);
     return;
   }

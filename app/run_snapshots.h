@@ -53,7 +53,7 @@ class SnapshotSeries {
 
 // The deformed surface of every piece as a surface file (.obj),
 // atomically: the finest surface carried by the frontier, or the
-// frontier's own (SurfaceOutput).
-void write_deformed_surface(const sim::World& world, const std::string& path, SurfaceOutput which);
+// frontier's own (SurfaceKind).
+void write_deformed_surface(const sim::World& world, const std::string& path, SurfaceKind which);
 
 }  // namespace mtcut::app

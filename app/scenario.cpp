@@ -227,9 +227,9 @@ ScenarioDef load_scenario(const std::string& path) {
     std::string surface = "finest";
     out->read("surface", surface);
     if (surface == "finest")
-      s.surface = SurfaceOutput::kFinest;
+      s.surface = SurfaceKind::kFinest;
     else if (surface == "frontier")
-      s.surface = SurfaceOutput::kFrontier;
+      s.surface = SurfaceKind::kFrontier;
     else
       out->fail(out->node("surface"), "'output.surface' must be \"finest\" or \"frontier\"");
     out->finish();

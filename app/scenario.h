@@ -13,10 +13,11 @@
 
 namespace mtcut::app {
 
-// What surface.obj shows: the organ's finest surface and the finest faces
-// of its cuts, carried by the simulated frontier (sim/finest_surface.h), or
-// the simulated frontier's own surface (coarse away from the blade).
-enum class SurfaceOutput { kFinest, kFrontier };
+// The tissue's surface as surface.obj and the viewer show it: the organ's
+// finest surface and the finest faces of its cuts, carried by the simulated
+// frontier (sim/finest_surface.h), or the simulated frontier's own surface
+// (coarse away from the blade).
+enum class SurfaceKind { kFinest, kFrontier };
 
 struct ScenarioDef {
   std::string file;             // the scenario's path
@@ -29,7 +30,7 @@ struct ScenarioDef {
   std::string summary_path;     // an extra copy of summary.json ("" = none), relative to the output folder
   std::string frames_path;      // per-frame CSV of every stage's figures ("" = none), relative to the output folder
   int snapshot_every = 0;       // a .vtu snapshot every this many frames (0 = none)
-  SurfaceOutput surface = SurfaceOutput::kFinest;  // [output] surface = "finest" | "frontier"
+  SurfaceKind surface = SurfaceKind::kFinest;  // [output] surface = "finest" | "frontier"
 };
 
 // Reads and checks a scenario. Throws InputError "file:line: what".

@@ -12,11 +12,16 @@ glm::vec3 unit_or_zero(const glm::vec3& v) {
 
 void update_surface_geometry(const SurfaceTopology& topology, std::span<const engine::Vec3> x, Shading shading,
                              SurfaceGeometry& out) {
-  const std::size_t corners = topology.corner_particle.size();
+  std::span<const engine::Vec3> points = x;
+  if (topology.finest) {
+    sim::place_finest_surface(*topology.finest, x, out.points);
+    points = out.points;
+  }
+  const std::size_t corners = topology.corner_point.size();
   out.corner_position.resize(corners);
   out.corner_normal.resize(corners);
   for (std::size_t c = 0; c < corners; ++c) {
-    const engine::Vec3& p = x[topology.corner_particle[c]];
+    const engine::Vec3& p = points[static_cast<std::size_t>(topology.corner_point[c])];
     out.corner_position[c] = glm::vec3(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()));
   }
   if (shading == Shading::kSmooth) out.group_normal.assign(topology.groups, glm::vec3(0.0f));

@@ -18,9 +18,11 @@ struct SurfaceGeometry {
   std::vector<glm::vec3> corner_position;  // (3 n_faces) deformed, m
   std::vector<glm::vec3> corner_normal;    // (3 n_faces) unit (zero for a degenerate face)
   std::vector<glm::vec3> group_normal;     // (n_groups) scratch for smooth shading
+  std::vector<engine::Vec3> points;        // scratch: the finest surface's vertices, placed
 };
 
-// Fills `out` from the particle positions `x` (n_particles). Flat: each
+// Fills `out` from the particle positions `x` (n_particles), through the
+// finest surface's carriers when the topology is of it. Flat: each
 // corner takes its face's normal; smooth: the area-weighted average over
 // the faces of its normal group (SurfaceTopology::corner_group).
 void update_surface_geometry(const SurfaceTopology& topology, std::span<const engine::Vec3> x, Shading shading,

@@ -59,6 +59,10 @@ void ViewerInput::on_key(KeyAction action) {
       s.shading = s.shading == Shading::kSmooth ? Shading::kFlat : Shading::kSmooth;
       session_.refresh_surface();
       break;
+    case KeyAction::kToggleSurface:
+      s.surface = s.surface == SurfaceKind::kFinest ? SurfaceKind::kFrontier : SurfaceKind::kFinest;
+      session_.refresh_surface();
+      break;
   }
 }
 

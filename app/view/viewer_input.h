@@ -6,7 +6,7 @@
 //   left drag           orbit          right or middle drag   pan
 //   scroll              zoom           R  reset the camera
 //   Space  pause        N  one step    W  wireframe   L  LOD colours
-//   F  flat/smooth shading
+//   F  flat/smooth shading      B  finest surface / the simulated frontier's
 
 #include "app/view/orbit_camera.h"
 #include "app/view/viewer_session.h"
@@ -15,14 +15,23 @@ namespace mtcut::app::view {
 
 enum class MouseButton { kLeft, kRight, kMiddle };
 
-enum class KeyAction { kResetCamera, kTogglePause, kStepOnce, kToggleWireframe, kToggleLodColors, kToggleShading };
+enum class KeyAction {
+  kResetCamera,
+  kTogglePause,
+  kStepOnce,
+  kToggleWireframe,
+  kToggleLodColors,
+  kToggleShading,
+  kToggleSurface
+};
 
 // The on-screen help (the panel shows it).
 inline constexpr const char* kInputHelp =
     "Shift + left drag: scalpel (cuts)\n"
     "Left drag: orbit   Right/middle drag: pan\n"
     "Scroll: zoom   R: reset camera   Space: pause\n"
-    "N: one step   W: wireframe   L: LOD colours   F: shading";
+    "N: one step   W: wireframe   L: LOD colours   F: shading\n"
+    "B: finest surface / simulated frontier";
 
 class ViewerInput {
  public:

@@ -171,6 +171,14 @@ void ViewerPanel::draw_hid(const ViewerSession& session) {
 
 void ViewerPanel::draw_display(ViewerSession& session) {
   ViewSettings& s = session.settings();
+  int surface = s.surface == SurfaceKind::kFinest ? 0 : 1;
+  bool surface_changed = ImGui::RadioButton("finest surface", &surface, 0);
+  ImGui::SameLine();
+  surface_changed |= ImGui::RadioButton("simulated frontier", &surface, 1);
+  if (surface_changed) {
+    s.surface = surface == 0 ? SurfaceKind::kFinest : SurfaceKind::kFrontier;
+    session.refresh_surface();
+  }
   int shading = s.shading == Shading::kSmooth ? 0 : 1;
   bool shading_changed = ImGui::RadioButton("smooth", &shading, 0);
   ImGui::SameLine();

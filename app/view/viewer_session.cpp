@@ -19,6 +19,7 @@ bool apart(const sim::ScalpelPose& a, const sim::ScalpelPose& b) {
 ViewerSession::ViewerSession(ScenarioDef scenario)
     : scenario_(std::move(scenario)), loaded_mt_(build_organ_mt(scenario_)) {
   loaded_vertices_ = loaded_mt_.num_vertices();
+  settings_.surface = scenario_.surface;
   lo_ = glm::dvec3(std::numeric_limits<double>::max());
   hi_ = glm::dvec3(std::numeric_limits<double>::lowest());
   for (const engine::Vec3& p : loaded_mt_.positions()) {
@@ -135,14 +136,22 @@ void ViewerSession::replay_trace(const std::string& path) {
 void ViewerSession::refresh_surface() {
   const sim::World& w = *world_;
   const TopologyKey key{w.frontier().version(), w.mt().revision(), w.model().num_particles(),
-                        w.frontier().tets().size()};
+                        w.frontier().tets().size(), settings_.surface};
   if (topology_stale_ || !(key == key_)) {
     if (levels_revision_ != w.mt().revision()) {
       levels_ = fragment_levels(w.mt());
       levels_revision_ = w.mt().revision();
     }
     const PieceLabels pieces = label_frontier_pieces(w.mt(), w.frontier());
-    topology_ = extract_surface(w.mt(), w.frontier(), w.model(), pieces, levels_, loaded_vertices_);
+    if (settings_.surface == SurfaceKind::kFinest) {
+      // The carriers that still hold are kept (a frontier move walks a few
+      // hundred vertices, not the whole surface).
+      const std::optional<sim::FinestSurface> previous = std::move(topology_.finest);
+      topology_ = extract_finest_surface(w.mt(), w.frontier(), w.model(), pieces, levels_, loaded_vertices_,
+                                         previous ? &*previous : nullptr);
+    } else {
+      topology_ = extract_surface(w.mt(), w.frontier(), w.model(), pieces, levels_, loaded_vertices_);
+    }
     key_ = key;
     topology_stale_ = false;
     ++topology_version_;

@@ -26,6 +26,7 @@
 namespace mtcut::app::view {
 
 struct ViewSettings {
+  SurfaceKind surface = SurfaceKind::kFinest;  // the scenario's [output] surface at the start
   Shading shading = Shading::kSmooth;
   ColorMode color_mode = ColorMode::kPieces;
   bool wireframe = false;
@@ -95,8 +96,9 @@ class ViewerSession {
   // Bumped whenever the topology is extracted again (the renderer then
   // uploads colours and sizes again).
   std::uint64_t topology_version() const { return topology_version_; }
-  // Re-extracts the topology if the frontier or the MT changed, and the
-  // geometry always (call after changing settings().shading).
+  // Re-extracts the topology if the frontier, the MT or settings().surface
+  // changed, and the geometry always (call after changing settings().shading
+  // or settings().surface).
   void refresh_surface();
 
   // The last pose given to the World (parked before any).
@@ -137,6 +139,7 @@ class ViewerSession {
   struct TopologyKey {
     std::uint64_t frontier_version = 0, mt_revision = 0;
     std::size_t particles = 0, tets = 0;
+    SurfaceKind surface = SurfaceKind::kFinest;
     bool operator==(const TopologyKey&) const = default;
   } key_;
   bool topology_stale_ = true;

@@ -123,6 +123,7 @@ void ViewerWindow::on_key(GLFWwindow* window, int key, int /*scancode*/, int act
     case GLFW_KEY_W: input.on_key(KeyAction::kToggleWireframe); break;
     case GLFW_KEY_L: input.on_key(KeyAction::kToggleLodColors); break;
     case GLFW_KEY_F: input.on_key(KeyAction::kToggleShading); break;
+    case GLFW_KEY_B: input.on_key(KeyAction::kToggleSurface); break;
     case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
     default: break;
   }

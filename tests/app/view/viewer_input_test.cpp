@@ -147,6 +147,23 @@ TEST(ViewerSession, ResetStartsAgainWithTheNewDefinition) {
   rig.s.reset(rig.s.scenario().world);
 }
 
+TEST(ViewerInput, BSwitchesBetweenTheFinestSurfaceAndTheSimulatedFrontiers) {
+  Rig rig;
+  rig.s.step();
+  // The scenario's [output] surface: the finest.
+  ASSERT_EQ(rig.s.settings().surface, SurfaceKind::kFinest);
+  EXPECT_TRUE(rig.s.topology().finest.has_value());
+  const std::uint64_t version = rig.s.topology_version();
+  rig.input.on_key(KeyAction::kToggleSurface);
+  EXPECT_EQ(rig.s.settings().surface, SurfaceKind::kFrontier);
+  EXPECT_FALSE(rig.s.topology().finest.has_value());
+  EXPECT_GT(rig.s.topology_version(), version);
+  EXPECT_EQ(rig.s.geometry().corner_position.size(), 3 * rig.s.topology().num_faces());
+  rig.input.on_key(KeyAction::kToggleSurface);
+  EXPECT_TRUE(rig.s.topology().finest.has_value());
+  EXPECT_EQ(rig.s.geometry().corner_position.size(), 3 * rig.s.topology().num_faces());
+}
+
 TEST(ViewerSession, TheLodViewSeesSeveralLevelsOnTheSurface) {
   Rig rig;
   rig.s.step();  // the LOD stage moves the frontier around the parked blade
