@@ -85,7 +85,7 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
   const int frames = options.frames_override > 0 ? options.frames_override : scenario.frames;
   record.frames_requested = frames;
   const int every = scenario.snapshot_every;
-  SnapshotSeries snapshots(dir.string(), world.mt().num_vertices());
+  SnapshotSeries snapshots(dir.string(), world.mt().num_vertices(), scenario.surface);
   std::vector<MetricsRow> rows;
   std::vector<sim::ScalpelSample> samples;
   PieceCounter pieces;
@@ -139,6 +139,7 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
                                     {"summary", "summary.json"},
                                     {"snapshots", snapshots.count()},
                                     {"pvd", every > 0 ? SnapshotSeries::kCollection : ""},
+                                    {"surface_pvd", every > 0 && snapshots.writes_surface() ? SnapshotSeries::kSurfaceCollection : ""},
                                     {"surface", "surface.obj"}};
   if (!options.record_path.empty()) outputs["trace"] = options.record_path;
   if (hid) result.summary["hid"] = hid->summary();

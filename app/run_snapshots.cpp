@@ -40,8 +40,8 @@ DeformedFrontier deform_frontier(const sim::World& world) {
   return out;
 }
 
-SnapshotSeries::SnapshotSeries(std::string dir, std::size_t first_cut_vertex)
-    : dir_(std::move(dir)), first_cut_vertex_(first_cut_vertex) {}
+SnapshotSeries::SnapshotSeries(std::string dir, std::size_t first_cut_vertex, SurfaceKind surface)
+    : dir_(std::move(dir)), first_cut_vertex_(first_cut_vertex), surface_(surface) {}
 
 void SnapshotSeries::write(const sim::World& world) {
   const engine::Mt& mt = world.mt();
@@ -68,15 +68,45 @@ void SnapshotSeries::write(const sim::World& world) {
   engine::write_vtu(frontier.mesh, (std::filesystem::path(dir_) / name).string(), {piece, level, made_by_cut});
   entries_.emplace_back(world.time(), name);
   last_frame_ = static_cast<std::int64_t>(world.frame());
-  write_collection();
+  write_collection(kCollection, entries_);
+  if (writes_surface()) write_surface(world, frontier, pieces.tet_piece);
 }
 
-void SnapshotSeries::write_collection() const {
-  engine::write_stream_atomically((std::filesystem::path(dir_) / kCollection).string(), [&](std::ostream& out) {
+void SnapshotSeries::write_surface(const sim::World& world, const DeformedFrontier& frontier,
+                                   const std::vector<std::int32_t>& piece) {
+  const engine::Mt& mt = world.mt();
+  finest_ = sim::carry_finest_surface(mt, world.frontier(), world.model(), finest_ ? &*finest_ : nullptr);
+  const sim::FinestSurface& surface = *finest_;
+  const std::size_t n = surface.num_faces();
+  engine::CellField face_piece{"piece", std::vector<double>(n)};
+  engine::CellField level{"fragment_level", std::vector<double>(n)};
+  engine::CellField made_by_cut{"made_by_cut", std::vector<double>(n)};
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::array<std::int32_t, 3>& face = surface.faces[i];
+    const engine::TetId carrier = surface.carrier[static_cast<std::size_t>(face[0])];
+    const auto at = std::lower_bound(frontier.tet_ids.begin(), frontier.tet_ids.end(), carrier);
+    face_piece.values[i] = piece[static_cast<std::size_t>(at - frontier.tet_ids.begin())];
+    level.values[i] = levels_[mt.birth(carrier).index()];
+    made_by_cut.values[i] = std::all_of(face.begin(), face.end(), [&](std::int32_t u) {
+                              return surface.vertices[static_cast<std::size_t>(u)].index() >= first_cut_vertex_;
+                            })
+                                ? 1
+                                : 0;
+  }
+  char name[40];
+  std::snprintf(name, sizeof name, "surface_%06llu.vtu", static_cast<unsigned long long>(world.frame()));
+  engine::write_vtu(sim::deformed_finest_surface(surface, world.state().x), (std::filesystem::path(dir_) / name).string(),
+                    {face_piece, level, made_by_cut});
+  surface_entries_.emplace_back(world.time(), name);
+  write_collection(kSurfaceCollection, surface_entries_);
+}
+
+void SnapshotSeries::write_collection(const char* file_name, const Entries& entries) const {
+  engine::write_stream_atomically((std::filesystem::path(dir_) / file_name).string(), [&](std::ostream& out) {
     out << "<?xml version=\"1.0\"?>\n"
         << "<VTKFile type=\"Collection\" version=\"0.1\">\n"
         << "  <Collection>\n";
-    for (const auto& [time, file] : entries_)
+    for (const auto& [time, file] : entries)
       out << "    <DataSet timestep=\"" << format_real(time) << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
     out << "  </Collection>\n"
         << "</VTKFile>\n";

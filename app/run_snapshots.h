@@ -1,17 +1,19 @@
 #pragma once
 // The geometric outputs of `mtcut run`: .vtu snapshots of the frontier at
-// its deformed positions with per-tet data, the .pvd collection that lists
-// them with their times (ParaView plays it as a time series), and the final
-// boundary surface. Every file is written atomically, and the collection is
+// its deformed positions with per-tet data and of the finest surface it
+// carries, the .pvd collections that list them with their times (ParaView
+// plays each as a time series), and the final surface. Every file is written atomically, and the collection is
 // rewritten after each snapshot, so an interrupted run leaves a valid series.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "app/scenario.h"
 #include "engine/tet_mesh.h"
+#include "sim/finest_surface.h"
 #include "sim/world.h"
 
 namespace mtcut::app {
@@ -29,23 +31,33 @@ class SnapshotSeries {
  public:
   // Files go into dir (which exists). MT vertices with ids >= first_cut_vertex
   // (the MT's vertex count when the run started) were made by cuts.
-  SnapshotSeries(std::string dir, std::size_t first_cut_vertex);
+  // `surface`: kFinest adds the finest surface's series.
+  SnapshotSeries(std::string dir, std::size_t first_cut_vertex, SurfaceKind surface);
 
-  // Writes snapshot_<frames done, 6 digits>.vtu with cell data piece,
-  // fragment_level and made_by_cut, then rewrites snapshots.pvd.
+  // Writes snapshot_<frames done, 6 digits>.vtu (the frontier's tets) with
+  // cell data piece, fragment_level and made_by_cut, then rewrites
+  // snapshots.pvd; with the finest surface, also surface_<frames>.vtu (its
+  // triangles, the same cell data: the level of the tet carrying a face's
+  // first corner) and surface.pvd.
   void write(const sim::World& world);
 
   std::size_t count() const { return entries_.size(); }
   // The frame count of the last snapshot written (none: -1).
   std::int64_t last_frame() const { return last_frame_; }
   static constexpr const char* kCollection = "snapshots.pvd";
+  static constexpr const char* kSurfaceCollection = "surface.pvd";
+  bool writes_surface() const { return surface_ == SurfaceKind::kFinest; }
 
  private:
-  void write_collection() const;
+  using Entries = std::vector<std::pair<double, std::string>>;  // (simulated time, file name) per snapshot
+  void write_collection(const char* name, const Entries& entries) const;
+  void write_surface(const sim::World& world, const DeformedFrontier& frontier, const std::vector<std::int32_t>& piece);
 
   std::string dir_;
   std::size_t first_cut_vertex_;
-  std::vector<std::pair<double, std::string>> entries_;  // (simulated time, file name) per snapshot
+  SurfaceKind surface_;
+  std::optional<sim::FinestSurface> finest_;  // the last one carried (its carriers are kept while they hold)
+  Entries entries_, surface_entries_;
   std::vector<std::int32_t> levels_;                     // fragment_levels at levels_revision_
   std::uint64_t levels_revision_ = 0;
   std::int64_t last_frame_ = -1;

@@ -182,7 +182,8 @@ void print_run_paragraph(std::ostream& out, const nlohmann::ordered_json& s) {
     const auto& o = s["outputs"];
     p << " Outputs in " << o["dir"].get<std::string>() << ": metrics.csv, summary.json";
     if (o["snapshots"].get<int>() > 0)
-      p << ", " << o["snapshots"].get<int>() << " snapshots (" << o["pvd"].get<std::string>() << ")";
+      p << ", " << o["snapshots"].get<int>() << " snapshots (" << o["pvd"].get<std::string>()
+        << (o.value("surface_pvd", "").empty() ? "" : ", " + o["surface_pvd"].get<std::string>()) << ")";
     p << ", " << o["surface"].get<std::string>();
     if (o.contains("trace")) p << "; scalpel trace " << o["trace"].get<std::string>();
     p << ".";

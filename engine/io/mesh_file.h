@@ -47,14 +47,18 @@ bool is_volume_file(const std::string& path);
 // the same base name.
 RawMesh read_volume_file(const std::string& path, MeshFormat format = MeshFormat::kUnknown);
 
-// One scalar per tet, written as VTK cell data.
+struct SurfaceMesh;  // engine/surface_mesh.h (which includes this header)
+
+// One scalar per cell (tet or triangle), written as VTK cell data.
 struct CellField {
   std::string name;
-  std::vector<double> values;  // (n_tets)
+  std::vector<double> values;  // (n_cells)
 };
 
 // VTK XML unstructured grid (appended raw binary, readable by ParaView), atomically.
 void write_vtu(const TetMesh& mesh, const std::string& path, const std::vector<CellField>& cell_data = {});
+// The same with the surface's triangles as its cells.
+void write_vtu(const SurfaceMesh& mesh, const std::string& path, const std::vector<CellField>& cell_data = {});
 
 // TetGen .node and .ele beside each other (path may end in .node, .ele or
 // have no extension), each written atomically.

@@ -1,23 +1,28 @@
 // VTK XML unstructured grid writer: the XML header names every array and its
 // offset into one appended raw block (each array: a UInt64 byte count, then
 // the values in the machine's byte order, which the header declares).
-// Points Float64, connectivity/offsets Int64, types UInt8 (10 = tet), cell
-// data Float64. ParaView and meshio read it; so does read_vtu.
+// Points Float64, connectivity/offsets Int64, types UInt8 (10 = tet,
+// 5 = triangle), cell data Float64. ParaView and meshio read it; so does read_vtu.
 
+#include <array>
 #include <bit>
 #include <cstring>
 #include <locale>
 #include <ostream>
+#include <span>
 #include <sstream>
+#include <type_traits>
 
 #include "engine/atomic_file.h"
 #include "engine/input_error.h"
 #include "engine/io/mesh_file.h"
+#include "engine/surface_mesh.h"
 
 namespace mtcut::engine {
 namespace {
 
 constexpr std::uint8_t kVtkTetra = 10;
+constexpr std::uint8_t kVtkTriangle = 5;
 
 std::string escape_xml(const std::string& text) {
   std::string out;
@@ -57,27 +62,32 @@ class AppendedBlock {
   std::string bytes_;
 };
 
-}  // namespace
-
-void write_vtu(const TetMesh& mesh, const std::string& path, const std::vector<CellField>& cell_data) {
+// Writes cells of one VTK type, each a range of `corners` vertex ids.
+template <class Cell>
+void write_cells(std::span<const Vec3> positions, std::span<const Cell> cells, std::uint8_t type,
+                 const char* cell_name, const std::string& path, const std::vector<CellField>& cell_data) {
   for (const CellField& field : cell_data)
-    if (field.values.size() != mesh.num_tets())
+    if (field.values.size() != cells.size())
       throw InputError(path + ": cell field '" + field.name + "' has " + std::to_string(field.values.size()) +
-                       " values for " + std::to_string(mesh.num_tets()) + " tets");
+                       " values for " + std::to_string(cells.size()) + " " + cell_name);
 
   AppendedBlock block;
   std::vector<double> points;  // (3 n_vertices)
-  points.reserve(3 * mesh.num_vertices());
-  for (const Vec3& p : mesh.positions) points.insert(points.end(), {p.x(), p.y(), p.z()});
-  std::vector<std::int64_t> connectivity;  // (4 n_tets)
-  std::vector<std::int64_t> offsets;       // (n_tets) end of each cell in connectivity
-  connectivity.reserve(4 * mesh.num_tets());
-  offsets.reserve(mesh.num_tets());
-  for (const Tet& tet : mesh.tets) {
-    for (VertId v : tet) connectivity.push_back(v.value);
+  points.reserve(3 * positions.size());
+  for (const Vec3& p : positions) points.insert(points.end(), {p.x(), p.y(), p.z()});
+  std::vector<std::int64_t> connectivity;  // (corners per cell * n_cells)
+  std::vector<std::int64_t> offsets;       // (n_cells) end of each cell in connectivity
+  offsets.reserve(cells.size());
+  for (const Cell& cell : cells) {
+    for (const auto& v : cell) {
+      if constexpr (std::is_integral_v<std::decay_t<decltype(v)>>)
+        connectivity.push_back(v);
+      else
+        connectivity.push_back(v.value);
+    }
     offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
   }
-  const std::vector<std::uint8_t> types(mesh.num_tets(), kVtkTetra);
+  const std::vector<std::uint8_t> types(cells.size(), type);
 
   const std::size_t points_at = block.add(points);
   const std::size_t connectivity_at = block.add(connectivity);
@@ -93,7 +103,7 @@ void write_vtu(const TetMesh& mesh, const std::string& path, const std::vector<C
       << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"" << order
       << "\" header_type=\"UInt64\">\n"
       << "  <UnstructuredGrid>\n"
-      << "    <Piece NumberOfPoints=\"" << mesh.num_vertices() << "\" NumberOfCells=\"" << mesh.num_tets()
+      << "    <Piece NumberOfPoints=\"" << positions.size() << "\" NumberOfCells=\"" << cells.size()
       << "\">\n"
       << "      <Points>\n"
       << "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"appended\" offset=\""
@@ -123,6 +133,17 @@ void write_vtu(const TetMesh& mesh, const std::string& path, const std::vector<C
     out.write(block.bytes().data(), static_cast<std::streamsize>(block.bytes().size()));
     out << "\n  </AppendedData>\n</VTKFile>\n";
   });
+}
+
+}  // namespace
+
+void write_vtu(const TetMesh& mesh, const std::string& path, const std::vector<CellField>& cell_data) {
+  write_cells<Tet>(mesh.positions, mesh.tets, kVtkTetra, "tets", path, cell_data);
+}
+
+void write_vtu(const SurfaceMesh& mesh, const std::string& path, const std::vector<CellField>& cell_data) {
+  write_cells<std::array<std::int32_t, 3>>(mesh.positions, mesh.triangles, kVtkTriangle, "triangles", path,
+                                           cell_data);
 }
 
 }  // namespace mtcut::engine

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -230,6 +231,10 @@ TEST_F(RunCommand, TheSurfaceWrittenIsTheFinestUnlessTheFrontiersIsAskedFor) {
   EXPECT_EQ(finest.count_open_edges(), 0u);
   EXPECT_EQ(frontier.count_open_edges(), 0u);
   EXPECT_GT(finest.positions.size(), 2 * frontier.positions.size());
+  // The snapshots' series of the finest surface comes with it.
+  EXPECT_TRUE(std::filesystem::exists(path("finest/surface.pvd")));
+  EXPECT_FALSE(std::filesystem::exists(path("frontier/surface.pvd")));
+  EXPECT_TRUE(std::filesystem::exists(path("frontier/snapshots.pvd")));
 }
 
 // A mesh file's unit: named or in metres, never both, never with a builtin

@@ -129,10 +129,26 @@ TEST_F(RunOutputs, EveryOutputExistsAndParses) {
   EXPECT_TRUE(std::is_sorted(sets.begin(), sets.end()));
   EXPECT_EQ(sets.front().first, 0.0);
   EXPECT_DOUBLE_EQ(sets.back().first, summary["simulated_seconds"].get<double>());
-  for (const auto& entry : fs::directory_iterator(out))
-    if (entry.path().extension() == ".vtu") present.push_back(entry.path().filename().string());
+  std::vector<std::string> surfaces_present;
+  for (const auto& entry : fs::directory_iterator(out)) {
+    const std::string file = entry.path().filename().string();
+    if (entry.path().extension() != ".vtu") continue;
+    (file.starts_with("surface_") ? surfaces_present : present).push_back(file);
+  }
   std::sort(present.begin(), present.end());
+  std::sort(surfaces_present.begin(), surfaces_present.end());
   EXPECT_EQ(present, listed);
+  // The finest surface's series: the same frames and times, its own files.
+  const auto surface_sets = read_pvd(out + "/surface.pvd");
+  std::vector<std::string> surfaces_listed;
+  for (std::size_t i = 0; i < surface_sets.size(); ++i) {
+    surfaces_listed.push_back(surface_sets[i].second);
+    ASSERT_LT(i, sets.size());
+    EXPECT_EQ(surface_sets[i].first, sets[i].first);
+    EXPECT_EQ(surface_sets[i].second, "surface_" + sets[i].second.substr(std::strlen("snapshot_")));
+  }
+  EXPECT_EQ(surface_sets.size(), sets.size());
+  EXPECT_EQ(surfaces_present, surfaces_listed);
 
   // Each .vtu: well-formed, with the three cell arrays, readable as a mesh.
   for (const std::string& file : listed) {
@@ -146,6 +162,22 @@ TEST_F(RunOutputs, EveryOutputExistsAndParses) {
     for (double p : vtu.cell_data.at("piece")) EXPECT_TRUE(p >= 0 && p == std::floor(p)) << p;
     for (double l : vtu.cell_data.at("fragment_level")) EXPECT_TRUE(l >= 0 && l == std::floor(l)) << l;
     for (double m : vtu.cell_data.at("made_by_cut")) EXPECT_TRUE(m == 0 || m == 1) << m;
+  }
+  // Each surface .vtu: triangles, a closed surface, the same three arrays.
+  for (const std::string& file : surfaces_listed) {
+    const VtuFile vtu = read_vtu_file(out + "/" + file);
+    const engine::RawMesh raw = engine::read_volume_file(out + "/" + file);
+    EXPECT_TRUE(raw.tets.empty()) << file;
+    EXPECT_EQ(raw.triangles.size(), vtu.cells) << file;
+    engine::SurfaceMesh mesh;
+    mesh.positions = raw.positions;
+    for (const auto& t : raw.triangles)
+      mesh.triangles.push_back({static_cast<std::int32_t>(t[0]), static_cast<std::int32_t>(t[1]), static_cast<std::int32_t>(t[2])});
+    EXPECT_EQ(mesh.count_open_edges(), 0u) << file;
+    for (const char* name : {"piece", "fragment_level", "made_by_cut"}) {
+      ASSERT_EQ(vtu.cell_data.count(name), 1u) << file << " " << name;
+      EXPECT_EQ(vtu.cell_data.at(name).size(), vtu.cells) << file << " " << name;
+    }
   }
   const VtuFile last = read_vtu_file(out + "/snapshot_000010.vtu");
   EXPECT_EQ(last.cells, summary["frontier_tets_final"].get<std::size_t>());

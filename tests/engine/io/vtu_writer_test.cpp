@@ -7,6 +7,7 @@
 #include "engine/io/mesh_file.h"
 #include "engine/io/mesh_readers.h"
 #include "engine/io/xml_scanner.h"
+#include "engine/surface_mesh.h"
 #include "tests/engine/io/io_test_util.h"
 #include "tests/test_paths.h"
 
@@ -64,6 +65,20 @@ TEST(VtuWriter, RealMeshesRoundTripExactly) {
     expect_same_mesh(back, mesh);
     EXPECT_TRUE(test::expect_valid_tets(back, "out.vtu").validate().ok());
   }
+}
+
+TEST(VtuWriter, ASurfaceRoundTripsAsTriangleCellsWithItsCellData) {
+  TempDir dir;
+  SurfaceMesh surface;  // a tetrahedron's four faces
+  surface.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  surface.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  write_vtu(surface, dir.file("surface.vtu"), {{"piece", {0, 1, 2, 3}}});
+  const RawMesh back = read_vtu(dir.file("surface.vtu"));
+  EXPECT_EQ(back.positions, surface.positions);
+  EXPECT_EQ(back.triangles, (std::vector<std::array<std::int64_t, 3>>{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}));
+  EXPECT_TRUE(back.tets.empty());
+  EXPECT_EQ(cell_data_values(test::read_bytes(dir.file("surface.vtu")), "piece"), (std::vector<double>{0, 1, 2, 3}));
+  EXPECT_THROW(write_vtu(surface, dir.file("bad.vtu"), {{"piece", {0, 1}}}), InputError);
 }
 
 TEST(VtuWriter, EmptyMeshRoundTrips) {
