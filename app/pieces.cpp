@@ -3,34 +3,16 @@
 #include <algorithm>
 #include <numeric>
 
-#include "engine/tet_adjacency.h"
+#include "engine/tet_components.h"
 
 namespace mtcut::app {
 
 PieceLabels label_pieces(const engine::TetMesh& mesh) {
-  const engine::TetAdjacency adjacency = engine::build_adjacency(mesh);
+  const engine::TetComponents components = engine::tet_components(mesh.tets, mesh.num_vertices());
+  const std::vector<std::size_t>& sizes = components.tets;
+  const std::vector<std::int32_t>& component = components.tet_component;
   const std::size_t n = mesh.num_tets();
-  std::vector<std::int32_t> component(n, -1);  // (n_tets) in order of discovery
-  std::vector<std::size_t> sizes;              // (n_components)
-  std::vector<std::size_t> stack;
-  for (std::size_t seed = 0; seed < n; ++seed) {
-    if (component[seed] >= 0) continue;
-    const auto id = static_cast<std::int32_t>(sizes.size());
-    sizes.push_back(0);
-    component[seed] = id;
-    stack.push_back(seed);
-    while (!stack.empty()) {
-      const std::size_t t = stack.back();
-      stack.pop_back();
-      ++sizes.back();
-      for (const engine::TetId next : adjacency.neighbors[t]) {
-        if (!next.valid() || component[next.index()] >= 0) continue;
-        component[next.index()] = id;
-        stack.push_back(next.index());
-      }
-    }
-  }
-  // Components are discovered in order of their smallest tet, so a stable
+  // Components are numbered in order of their first tet, so a stable
   // sort by size keeps that order among equal sizes.
   std::vector<std::int32_t> order(sizes.size());
   std::iota(order.begin(), order.end(), 0);

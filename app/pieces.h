@@ -1,9 +1,9 @@
 #pragma once
-// The pieces of a tet mesh: its connected components when two tets are
-// connected through a shared face (an edge or a vertex does not hold two
-// pieces together). A cut separates pieces by giving each side its own
-// copies of the cut's vertices, so no face is shared across it. `mtcut run`
-// (metrics, snapshots) and the viewer (piece colours) both count them here.
+// The pieces of a tet mesh, labelled for people: its connected components
+// (engine/tet_components.h: tets sharing a vertex are one piece, as the
+// World counts them), numbered by size. `mtcut run` (snapshots, the piece
+// report) and the viewer (piece colours) label them here; the count in
+// metrics.csv and the summary is the World's (World::pieces()).
 
 #include <cstdint>
 #include <vector>

@@ -88,7 +88,6 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
   SnapshotSeries snapshots(dir.string(), world.mt().num_vertices(), scenario.surface);
   std::vector<MetricsRow> rows;
   std::vector<sim::ScalpelSample> samples;
-  PieceCounter pieces;
   rows.reserve(static_cast<std::size_t>(frames));
 
   // The scalpel's samples for the frame at t, the last one at t: every sample
@@ -115,7 +114,7 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
         hid->stepped(t, world.last_frame().total_ms * 1e-3);
         hid->report_events(std::cerr);
       }
-      rows.push_back(record_frame(world, pieces));
+      rows.push_back(record_frame(world));
       if (every > 0 && world.frame() % static_cast<std::uint64_t>(every) == 0) snapshots.write(world);
       progress.update(f + 1, rows.back().frame.total_ms);
     }

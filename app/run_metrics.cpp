@@ -3,7 +3,6 @@
 #include <ostream>
 
 #include "app/run_format.h"
-#include "app/pieces.h"
 #include "engine/atomic_file.h"
 
 namespace mtcut::app {
@@ -15,21 +14,12 @@ double kinetic_energy(const sim::SpringModel& model, const sim::SpringState& sta
   return 0.5 * energy;
 }
 
-int PieceCounter::count(const sim::World& world) {
-  const std::pair<std::uint64_t, std::uint64_t> now{world.frontier().version(), world.mt().revision()};
-  if (seen_ != now) {
-    count_ = label_pieces(world.frontier().to_tet_mesh(world.mt())).count();
-    seen_ = now;
-  }
-  return count_;
-}
-
-MetricsRow record_frame(const sim::World& world, PieceCounter& pieces) {
+MetricsRow record_frame(const sim::World& world) {
   MetricsRow row;
   row.frame = world.last_frame();
   row.cut_jobs_pending = world.last_frame().cut_jobs_pending;
   row.kinetic_energy = kinetic_energy(world.model(), world.state());
-  row.pieces = pieces.count(world);
+  row.pieces = static_cast<int>(world.pieces());
   return row;
 }
 

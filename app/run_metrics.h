@@ -4,7 +4,6 @@
 // scenario asks for it ([output] frames), the World's stage figures.
 
 #include <cstdint>
-#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -18,24 +17,13 @@ struct MetricsRow {
   sim::FrameMetrics frame;
   std::size_t cut_jobs_pending = 0;  // cut work queued after the frame
   double kinetic_energy = 0;         // J, 1/2 sum m |v|^2 over the particles
-  int pieces = 1;                    // connected parts of the frontier mesh
+  int pieces = 1;                    // the World's pieces (World::pieces())
 };
 
 double kinetic_energy(const sim::SpringModel& model, const sim::SpringState& state);
 
-// The number of pieces of a World's frontier, recounted only when the
-// frontier or the MT changed since the last call.
-class PieceCounter {
- public:
-  int count(const sim::World& world);
-
- private:
-  std::optional<std::pair<std::uint64_t, std::uint64_t>> seen_;  // (frontier version, MT revision) counted
-  int count_ = 0;
-};
-
 // The row of the frame the World has just stepped.
-MetricsRow record_frame(const sim::World& world, PieceCounter& pieces);
+MetricsRow record_frame(const sim::World& world);
 
 // metrics.csv, atomically: a header line, then one row per frame.
 void write_metrics_csv(const std::string& path, std::span<const MetricsRow> rows);

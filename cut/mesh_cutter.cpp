@@ -10,6 +10,7 @@
 #include "cut/tet_splitter.h"
 #include "cut/vertex_unpinch.h"
 #include "engine/tet_adjacency.h"
+#include "engine/tet_components.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {
@@ -25,26 +26,7 @@ double seconds_since(Clock::time_point start) {
 
 }  // namespace
 
-std::size_t count_pieces(const TetMesh& mesh) {
-  const engine::TetAdjacency adj = engine::build_adjacency(mesh);
-  std::vector<std::size_t> parent(mesh.num_tets());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  std::size_t pieces = mesh.num_tets();
-  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
-    for (TetId u : adj.neighbors[t]) {
-      if (!u.valid()) continue;
-      const std::size_t a = find(t), b = find(u.index());
-      if (a != b) {
-        parent[a] = b;
-        --pieces;
-      }
-    }
-  return pieces;
-}
+std::size_t count_pieces(const TetMesh& mesh) { return engine::tet_components(mesh.tets, mesh.num_vertices()).count(); }
 
 namespace {
 

@@ -4,6 +4,8 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "engine/union_find.h"
+
 namespace mtcut::cut {
 
 PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& cls, const std::vector<std::uint32_t>& nearby) {
@@ -50,12 +52,8 @@ PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& cls, con
     }
     for (int side = 0; side < 2; ++side) {
       const VertexState state = side == 0 ? VertexState::kNeg : VertexState::kPos;
-      std::vector<std::size_t> parent(tets.size());
-      std::iota(parent.begin(), parent.end(), 0);
-      auto find = [&](std::size_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-      };
+      engine::UnionFind parts(tets.size());
+      const auto find = [&](std::size_t x) { return static_cast<std::size_t>(parts.find(static_cast<std::int32_t>(x))); };
       // Two tets around the edge share a face (a, b, x). It joins their parts
       // on this side when x is on this side, or on the cut with both tets on
       // this side (then neither straddles, and both keep this side's copies).
@@ -64,7 +62,8 @@ PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& cls, con
           for (VertId x : others[i]) {
             if (x != others[j][0] && x != others[j][1]) continue;
             if (!reach[i][side] || !reach[j][side]) continue;
-            if (cls.state(x) == state || is_on(cls.state(x))) parent[find(i)] = find(j);
+            if (cls.state(x) == state || is_on(cls.state(x)))
+              parts.unite(static_cast<std::int32_t>(i), static_cast<std::int32_t>(j));
           }
       std::unordered_map<std::size_t, std::size_t> size;  // component -> tets
       for (std::size_t i = 0; i < tets.size(); ++i)
@@ -123,12 +122,8 @@ std::size_t unpinch_vertices(engine::TetMesh& mesh, std::span<const VertId> cand
     if (tets.size() < 2) continue;
     // Tets around v are joined through faces holding v: key them by the
     // face's two other vertices.
-    std::vector<std::size_t> parent(tets.size());
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](std::size_t x) {
-      while (parent[x] != x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
+    engine::UnionFind parts(tets.size());
+    const auto find = [&](std::size_t x) { return static_cast<std::size_t>(parts.find(static_cast<std::int32_t>(x))); };
     std::unordered_map<std::uint64_t, std::size_t> first_with;
     for (std::size_t j = 0; j < tets.size(); ++j) {
       const engine::Tet& tet = mesh.tets[tets[j]];
@@ -138,7 +133,7 @@ std::size_t unpinch_vertices(engine::TetMesh& mesh, std::span<const VertId> cand
           const auto lo = static_cast<std::uint64_t>(std::min(tet[a], tet[b]).value);
           const auto hi = static_cast<std::uint64_t>(std::max(tet[a], tet[b]).value);
           const auto [it, fresh] = first_with.emplace(lo << 32 | hi, j);
-          if (!fresh) parent[find(j)] = find(it->second);
+          if (!fresh) parts.unite(static_cast<std::int32_t>(j), static_cast<std::int32_t>(it->second));
         }
     }
     // The part of the first tet keeps v; every other part gets a copy.

@@ -5,27 +5,14 @@
 #include <span>
 #include <string>
 
+#include "engine/union_find.h"
+
 namespace mtcut::cut {
 namespace {
 
+using engine::UnionFind;
 using engine::VertId;
 
-struct UnionFind {
-  std::vector<std::int32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::int32_t find(std::int32_t x) {
-    while (parent[static_cast<std::size_t>(x)] != x) {
-      const std::int32_t up = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-      parent[static_cast<std::size_t>(x)] = up;
-      x = up;
-    }
-    return x;
-  }
-  void unite(std::int32_t a, std::int32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-  }
-};
 
 // The pieces' union-find. Nodes: the finest tets in the order of
 // created(root) (node i is created(root)[i]), then one per fragment (n_fine
@@ -67,7 +54,7 @@ MtPieces find_pieces(const Mt& mt) {
   };
   // Numbered in ascending order of the tet ids of the finest tets.
   MtPieces pieces;
-  std::vector<std::int32_t> piece_of_root(uf.parent.size(), -1);
+  std::vector<std::int32_t> piece_of_root(uf.size(), -1);
   for (std::size_t i = 0; i < mt.num_tets(); ++i) {
     const TetId t(i);
     if (!mt.alive(t) || mt.birth(t) != mt.root()) continue;
@@ -99,7 +86,7 @@ std::size_t count_pieces(const Mt& mt) {
   UnionFind uf = join_pieces(mt);
   std::size_t count = 0;
   const std::size_t n_fine = mt.created(mt.root()).size();
-  for (std::size_t i = 0; i < n_fine; ++i) count += uf.parent[i] == static_cast<std::int32_t>(i);
+  for (std::size_t i = 0; i < n_fine; ++i) count += uf.is_root(static_cast<std::int32_t>(i));
   return count;
 }
 

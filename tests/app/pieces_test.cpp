@@ -1,5 +1,5 @@
-// The pieces of a tet mesh and of an MT frontier: face-connected
-// components, numbered by size.
+// The pieces of a tet mesh and of an MT frontier: vertex-connected
+// components (engine/tet_components.h), numbered by size.
 
 #include "app/pieces.h"
 
@@ -19,7 +19,7 @@ Tet tet(int a, int b, int c, int d) { return {VertId(a), VertId(b), VertId(c), V
 // Points of a small grid: enough positions for the ids the tests use.
 engine::TetMesh mesh_of(std::vector<Tet> tets) {
   engine::TetMesh mesh;
-  for (int i = 0; i < 12; ++i) mesh.positions.push_back(Vec3(i % 3, (i / 3) % 2, i / 6));
+  for (int i = 0; i < 16; ++i) mesh.positions.push_back(Vec3(i % 3, (i / 3) % 2, i / 6));
   mesh.tets = std::move(tets);
   return mesh;
 }
@@ -30,15 +30,18 @@ TEST(Pieces, TetsSharingAFaceAreOnePiece) {
   EXPECT_EQ(labels.tet_piece, (std::vector<std::int32_t>{0, 0}));
 }
 
-TEST(Pieces, AnEdgeOrAVertexDoesNotHoldTwoPiecesTogether) {
-  EXPECT_EQ(label_pieces(mesh_of({tet(0, 1, 2, 3), tet(0, 1, 4, 5)})).count(), 2);  // an edge
-  EXPECT_EQ(label_pieces(mesh_of({tet(0, 1, 2, 3), tet(0, 4, 5, 6)})).count(), 2);  // a vertex
+TEST(Pieces, AnEdgeOrAVertexHoldsTwoTetsTogetherAsTheSpringsDo) {
+  // One particle per vertex: tets sharing only an edge or a vertex move as
+  // one body, and the World counts them as one piece.
+  EXPECT_EQ(label_pieces(mesh_of({tet(0, 1, 2, 3), tet(0, 1, 4, 5)})).count(), 1);  // an edge
+  EXPECT_EQ(label_pieces(mesh_of({tet(0, 1, 2, 3), tet(0, 4, 5, 6)})).count(), 1);  // a vertex
+  EXPECT_EQ(label_pieces(mesh_of({tet(0, 1, 2, 3), tet(4, 5, 6, 7)})).count(), 2);  // nothing
 }
 
 TEST(Pieces, TheLargestPieceIsPieceZeroThenBySizeThenByFirstTet) {
   // tet 0 alone; tets 1, 2, 3 a chain through faces; tet 4 alone.
   const PieceLabels labels = label_pieces(
-      mesh_of({tet(0, 1, 2, 3), tet(4, 5, 6, 7), tet(5, 6, 7, 8), tet(6, 7, 8, 9), tet(10, 11, 0, 4)}));
+      mesh_of({tet(0, 1, 2, 3), tet(4, 5, 6, 7), tet(5, 6, 7, 8), tet(6, 7, 8, 9), tet(10, 11, 12, 13)}));
   ASSERT_EQ(labels.count(), 3);
   EXPECT_EQ(labels.tet_piece, (std::vector<std::int32_t>{1, 0, 0, 0, 2}));
   EXPECT_EQ(labels.piece_tets, (std::vector<std::size_t>{3, 1, 1}));

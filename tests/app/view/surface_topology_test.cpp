@@ -45,12 +45,12 @@ TEST(SurfaceTopology, BoundaryFacesWithPiecesAndCornersOnTheirParticles) {
   EXPECT_EQ(per_piece.count(0), 6u);
   EXPECT_EQ(per_piece.count(1), 4u);
   EXPECT_EQ(per_piece.count(2), 4u);
-  EXPECT_EQ(s.groups, 12);  // every vertex is on the surface, none on a cut
+  EXPECT_EQ(s.groups, 13);  // every vertex is on the surface, none on a cut
 }
 
 TEST(SurfaceTopology, FacesWhoseVerticesAllCameFromACutAreCutFaces) {
-  // Pretend vertices 5.. were made by a cut: C's four faces qualify, and
-  // E's faces (holding vertex 0) only the one without vertex 0.
+  // Pretend vertices 5.. were made by a cut: C's four faces and E's four
+  // (on 9 to 12) qualify.
   const Extracted e = extract(5);
   int cut = 0;
   for (std::size_t f = 0; f < e.topology.num_faces(); ++f) {
@@ -59,7 +59,7 @@ TEST(SurfaceTopology, FacesWhoseVerticesAllCameFromACutAreCutFaces) {
     EXPECT_EQ(e.topology.face_cut[f] == 1, all_new);
     cut += e.topology.face_cut[f];
   }
-  EXPECT_EQ(cut, 5);
+  EXPECT_EQ(cut, 8);
 }
 
 TEST(SurfaceGeometry, FlatNormalsPointOutOfTheirTetAndSmoothOnesAreUnit) {
@@ -79,10 +79,7 @@ TEST(SurfaceGeometry, FlatNormalsPointOutOfTheirTetAndSmoothOnesAreUnit) {
     for (int k = 0; k < 3; ++k) {
       EXPECT_GT(glm::dot(flat.corner_normal[3 * f + k], outward), 0.0f) << "face " << f;
       EXPECT_NEAR(glm::length(flat.corner_normal[3 * f + k]), 1.0f, 1e-5f);
-      // Vertex 0, where A and its mirror image E touch: their normals cancel.
-      if (s.faces[f][k].value != 0) {
-        EXPECT_NEAR(glm::length(smooth.corner_normal[3 * f + k]), 1.0f, 1e-5f);
-      }
+      EXPECT_NEAR(glm::length(smooth.corner_normal[3 * f + k]), 1.0f, 1e-5f);
     }
   }
   // Moving a particle moves every corner on it.

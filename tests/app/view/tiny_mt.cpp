@@ -25,11 +25,11 @@ engine::TetMesh three_piece_mesh() {
   mesh.positions = {Vec3(0, 0, 0),  Vec3(1, 0, 0),  Vec3(0, 1, 0),  Vec3(0, 0, 1),   // A
                     Vec3(1, 1, 1),                                                   // B's apex
                     Vec3(5, 0, 0),  Vec3(6, 0, 0),  Vec3(5, 1, 0),  Vec3(5, 0, 1),   // C
-                    Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0, -1)};                 // E with 0
+                    Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0, -1), Vec3(0, 0, 0)};  // E with 0's copy
   add_positive(mesh, 0, 1, 2, 3);
   add_positive(mesh, 1, 2, 3, 4);
   add_positive(mesh, 5, 6, 7, 8);
-  add_positive(mesh, 0, 9, 10, 11);
+  add_positive(mesh, 12, 9, 10, 11);
   return mesh;
 }
 

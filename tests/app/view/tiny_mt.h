@@ -10,7 +10,8 @@
 namespace mtcut::test {
 
 // Four tets: A = (0,1,2,3) and B share a face; C is apart; E touches A at
-// vertex 0 only. So three pieces: {A, B}, {C}, {E}.
+// the point of vertex 0 through its own copy of it, vertex 12 (as a cut
+// leaves two pieces). So three pieces: {A, B}, {C}, {E}.
 engine::TetMesh three_piece_mesh();
 
 // The MT of `mesh` at its finest frontier with a spring model on it.
