@@ -72,9 +72,9 @@ PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& cls, con
       // Keep the largest part on this side; the tets of the others reach it
       // through vertices near the plane: pull those onto the cut if they are
       // near enough, else keep the edge's ends off it.
-      std::size_t keep = size.begin()->first;
+      std::size_t keep = size.begin()->first;  // the largest, ties to the smallest root (not the map's order)
       for (const auto& [root, n] : size)
-        if (n > size[keep]) keep = root;
+        if (n > size[keep] || (n == size[keep] && root < keep)) keep = root;
       std::vector<VertId> pull;
       bool near = true;
       for (std::size_t i = 0; i < tets.size() && near; ++i) {

@@ -123,7 +123,7 @@ void reject_impossible_counts(const std::string& path, const std::string& ext) {
   } else if (ext == ".stl") {
     std::string head(84, '\0');
     in.read(head.data(), 84);
-    if (in.gcount() == 84 && head.rfind("solid", 0) != 0) {
+    if (in.gcount() == 84 && stl_is_binary(path)) {
       std::uint32_t triangles = 0;
       std::memcpy(&triangles, head.data() + 80, sizeof triangles);
       if (84 + 50.0 * triangles > size) refuse("its header declares " + std::to_string(triangles) + " triangles");
@@ -146,7 +146,7 @@ void reject_non_finite_text(const std::string& path, const std::string& ext) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::getline(in, line);
-  const bool ascii = ext == ".obj" || ext == ".off" || (ext == ".stl" && line.rfind("solid", 0) == 0) ||
+  const bool ascii = ext == ".obj" || ext == ".off" || (ext == ".stl" && !stl_is_binary(path)) ||
                      (ext == ".ply" && [&] {
                        std::string header;
                        while (std::getline(in, header) && header.rfind("format", 0) != 0) {

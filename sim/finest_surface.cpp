@@ -23,8 +23,9 @@ using engine::VertId;
 // every face through the vertex (a crack's among them).
 constexpr double kInward = 1e-3;
 // Below this weight a vertex counts as outside its carrier (rounding of a
-// vertex on the carrier's face).
+// vertex on the carrier's face); above kInside, strictly inside it.
 constexpr double kOutside = -1e-9;
+constexpr double kInside = 1e-9;
 
 double least_weight(const std::array<double, 4>& w) { return *std::min_element(w.begin(), w.end()); }
 
@@ -82,16 +83,24 @@ FinestSurface carry_finest_surface(const Mt& mt, const engine::Frontier& frontie
     out.faces.push_back({local[face[0].index()], local[face[1].index()], local[face[2].index()]});
 
   // The carriers: kept where the previous one still is a live frontier
-  // tet, else walked from a finest tet of the vertex.
+  // tet, else walked from a finest tet of the vertex. After a cut, only
+  // those that hold their vertex strictly inside: a crack that separates a
+  // vertex from its carrier goes through the carrier, which it then splits
+  // (killing it), when the vertex is inside; a vertex on the carrier's
+  // surface or outside it (a free boundary) may be cut off from it by a
+  // crack that leaves the carrier whole.
   const std::size_t n = out.vertices.size();
   out.carrier.assign(n, TetId());
   out.weight.resize(n);
+  out.mt_revision = mt.revision();
   const bool reuse = previous && previous->mt_instance == mt.instance();
+  const bool cut_since = reuse && previous->mt_revision != mt.revision();
   if (reuse)
     for (std::size_t i = 0; i < previous->vertices.size(); ++i) {
       const VertId v = previous->vertices[i];
       const TetId c = previous->carrier[i];
       if (v.index() >= local.size() || local[v.index()] < 0 || !mt.alive(c) || !frontier.has_tet(c)) continue;
+      if (cut_since && !(least_weight(previous->weight[i]) > kInside)) continue;
       const auto k = static_cast<std::size_t>(local[v.index()]);
       out.carrier[k] = c;
       out.weight[k] = previous->weight[i];

@@ -47,6 +47,7 @@ struct FinestSurface {
   std::size_t outside = 0;  // vertices outside their carrier (weights extrapolated)
   std::size_t walked = 0;   // vertices whose carrier was found anew (not kept from `previous`)
   std::uint64_t mt_instance = 0;  // Mt::instance() it was carried on
+  std::uint64_t mt_revision = 0;  // and its Mt::revision()
 
   std::size_t num_faces() const { return faces.size(); }
   std::size_t num_vertices() const { return vertices.size(); }
@@ -56,8 +57,9 @@ struct FinestSurface {
 // vertices `model` simulates (a model built on the frontier; else
 // std::invalid_argument). With `previous` (the surface carried on the same
 // MT object, before its last cuts or frontier moves), a vertex whose
-// carrier is still a live frontier tet keeps it and its weights: only the
-// others walk, a few hundred when the frontier moves around the blade.
+// carrier is still a live frontier tet keeps it and its weights (after a
+// cut, if the vertex lies strictly inside it): only the others walk, a few
+// hundred when the frontier moves around the blade.
 FinestSurface carry_finest_surface(const engine::Mt& mt, const engine::Frontier& frontier, const SpringModel& model,
                                    const FinestSurface* previous = nullptr);
 

@@ -146,9 +146,9 @@ void ViewerSession::refresh_surface() {
     if (settings_.surface == SurfaceKind::kFinest) {
       // The carriers that still hold are kept (a frontier move walks a few
       // hundred vertices, not the whole surface).
-      const std::optional<sim::FinestSurface> previous = std::move(topology_.finest);
-      topology_ = extract_finest_surface(w.mt(), w.frontier(), w.model(), pieces, levels_, loaded_vertices_,
-                                         previous ? &*previous : nullptr);
+      SurfaceTopology next = extract_finest_surface(w.mt(), w.frontier(), w.model(), pieces, levels_,
+                                                    loaded_vertices_, topology_.finest ? &*topology_.finest : nullptr);
+      topology_ = std::move(next);
     } else {
       topology_ = extract_surface(w.mt(), w.frontier(), w.model(), pieces, levels_, loaded_vertices_);
     }

@@ -106,6 +106,14 @@ std::string format_name(MeshFormat format) {
   return "unknown";
 }
 
+bool stl_is_binary(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(84, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return is_binary_stl(path, head) || !starts_with(head, "solid");
+}
+
 bool is_surface_format(MeshFormat format) {
   return format == MeshFormat::kObj || format == MeshFormat::kOff || format == MeshFormat::kStl ||
          format == MeshFormat::kPly;

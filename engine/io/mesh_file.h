@@ -39,6 +39,12 @@ std::string format_name(MeshFormat format);
 // True for the surface-only formats (OBJ, OFF, STL, PLY).
 bool is_surface_format(MeshFormat format);
 
+// An STL file is binary: its size is a binary STL's for the triangle count
+// its header gives (an 80-byte header, which some exporters begin with the
+// ascii keyword "solid", a count, 50 bytes per triangle), or it does not
+// begin with "solid" (a damaged binary file, refused for its count).
+bool stl_is_binary(const std::string& path);
+
 // True for .node, .ele, .msh, .vtk, .vtu (case-insensitive).
 bool is_volume_file(const std::string& path);
 

@@ -68,6 +68,26 @@ TEST_F(SurfaceFiles, EveryFormatRoundTrips) {
   }
 }
 
+// Some exporters begin a binary STL's 80-byte header with "solid", the
+// ascii keyword: the file's size tells it is binary.
+TEST_F(SurfaceFiles, ABinaryStlWhoseHeaderSaysSolidIsReadAsBinary) {
+  BuiltinShapeDef def;
+  def.shape = BuiltinShape::kEllipsoid;
+  def.target_tets = 500;
+  const SurfaceMesh shape = make_builtin_surface(def);
+  const std::string file = path("exported.stl");
+  write_surface_file(shape, file);
+  {
+    std::fstream patch(file, std::ios::in | std::ios::out | std::ios::binary);
+    const std::string header = "solid exported by a CAD tool";
+    patch.write(header.data(), static_cast<std::streamsize>(header.size()));
+  }
+  ASSERT_EQ(format_of_content(file), MeshFormat::kStl);
+  const SurfaceMesh back = read_surface_file(file);
+  EXPECT_EQ(back.triangles.size(), shape.triangles.size());
+  EXPECT_NEAR(back.enclosed_volume(), shape.enclosed_volume(), 1e-5 * shape.enclosed_volume());
+}
+
 TEST_F(SurfaceFiles, BadFilesGiveOneClearLine) {
   EXPECT_NE(input_error_of([&] { read_surface_file(path("missing.obj")); }).find("missing.obj: no such file"),
             std::string::npos);

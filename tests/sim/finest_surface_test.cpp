@@ -169,16 +169,21 @@ TEST(FinestSurface, FollowsAWorldThroughAStrokeAndEachSideOfTheCrackFollowsItsOw
         ++crack_corners;
       }
     }
-    kept_frames += f > 0 && next.walked < next.num_vertices() / 2;
+    // Without a cut since the last carry, the carriers a frontier move left
+    // are kept: most vertices do not walk.
+    if (f > 0 && next.mt_revision == surface.mt_revision) {
+      EXPECT_LT(next.walked, next.num_vertices() / 2) << "frame " << f;
+      ++kept_frames;
+    }
     surface = next;
   }
   EXPECT_GT(crack_corners, 0u);
-  EXPECT_GT(kept_frames, 100u);  // most vertices keep their carriers from frame to frame
+  EXPECT_GT(kept_frames, 60u);
   ASSERT_EQ(world.pieces(), 2u);
 
-  // Every vertex is carried by a tet of its own piece: moving one piece's
-  // particles moves exactly that piece's surface, the flap's crack side
-  // with it.
+  // Every vertex is carried by a tet of its own piece (the piece of the
+  // finest tets it bounds): moving one piece's particles moves exactly that
+  // piece's surface, the flap's crack side with it.
   const Mt& mt = world.mt();
   const cut::MtPieces pieces = cut::find_pieces(mt);
   std::vector<std::int32_t> vertex_piece(mt.num_vertices(), -1);
@@ -193,20 +198,16 @@ TEST(FinestSurface, FollowsAWorldThroughAStrokeAndEachSideOfTheCrackFollowsItsOw
   place_finest_surface(surface, x, before);
   place_finest_surface(surface, moved, after);
   std::size_t crack_vertices = 0;
+  std::vector<std::int32_t> own(surface.num_vertices(), -1);  // the piece of the finest tets it bounds
+  for (std::size_t i = 0; i < surface.num_faces(); ++i)
+    for (const std::int32_t u : surface.faces[i]) own[static_cast<std::size_t>(u)] = pieces.tet_piece[surface.face_tet[i].index()];
   for (std::size_t u = 0; u < surface.num_vertices(); ++u) {
-    const std::int32_t own = pieces.tet_piece[surface.carrier[u].index()];
-    ASSERT_GE(own, 0);
-    const Vec3 expected = before[u] + (own == 1 ? shift : Vec3::Zero());
+    ASSERT_GE(own[u], 0);
+    const Vec3 expected = before[u] + (own[u] == 1 ? shift : Vec3::Zero());
     EXPECT_LT((after[u] - expected).norm(), 1e-12) << "vertex " << surface.vertices[u].index();
     crack_vertices += surface.vertices[u].index() >= loaded_vertices;
   }
   EXPECT_GT(crack_vertices, 0u);
-  // And each vertex's carrier is in the piece of the finest tets it bounds.
-  for (std::size_t i = 0; i < surface.num_faces(); ++i)
-    for (const std::int32_t u : surface.faces[i])
-      EXPECT_EQ(pieces.tet_piece[surface.carrier[static_cast<std::size_t>(u)].index()],
-                pieces.tet_piece[surface.face_tet[i].index()])
-          << "face " << i;
 }
 
 }  // namespace
