@@ -9,6 +9,7 @@
 #include "engine/mesh_loader.h"
 #include "engine/mt/mt_builder.h"
 #include "sim/world.h"
+#include "tests/sim/organ_world.h"
 
 namespace mtcut::sim {
 namespace {
@@ -112,33 +113,13 @@ TEST(FinestSurface, AModelOnAnotherFrontierIsRefused) {
   EXPECT_THROW(carry_finest_surface(mt, Frontier::finest(mt), model_on(mt, coarsest)), std::invalid_argument);
 }
 
-// The flap stroke of the World's tests (world_test.cpp) on an organ with a
-// free boundary: through its front end, fixed at its back.
-WorldDef flap_world_def() {
-  WorldDef def;
-  def.fixed.kind = FixedRegion::Kind::kHalfSpace;
-  def.fixed.normal = Vec3(1, 0, 0);
-  def.fixed.offset = -0.06;
-  def.lod.near_radius = 0.02;
-  def.lod.near_error = 0.0;
-  def.lod.far_radius = 0.06;
-  def.lod.far_error = 1.0;
-  def.environment.floor = Plane{Vec3(0, 0, 1), -0.05};
-  return def;
-}
-
-ScalpelPath flap_stroke() {
-  std::vector<ScalpelKeyframe> keys = {{0.0, {Vec3(0.04, -0.06, 0.06), Vec3(0.04, -0.06, -0.07), true}},
-                                       {0.5, {Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), true}},
-                                       {0.501, {Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), false}}};
-  return ScalpelPath(keys);
-}
-
 TEST(FinestSurface, FollowsAWorldThroughAStrokeAndEachSideOfTheCrackFollowsItsOwnPiece) {
-  const ScalpelPath path = flap_stroke();
+  // The World's flap stroke (tests/sim/organ_world.h) on an organ with a
+  // free boundary.
+  const ScalpelPath path = test::flap_stroke(0.5);
   Mt organ = organ_mt(false);
   const std::size_t loaded_vertices = organ.num_vertices();
-  World world(std::move(organ), flap_world_def(), path.pose_at(0));
+  World world(std::move(organ), test::flap_def(), path.pose_at(0));
   FinestSurface surface;
   std::size_t kept_frames = 0, crack_corners = 0;
   for (int f = 0; f < 120; ++f) {

@@ -11,26 +11,19 @@
 #include "engine/mesh_loader.h"
 #include "engine/mt/frontier.h"
 #include "engine/mt/mt_builder.h"
+#include "tests/sim/organ_world.h"
 
 namespace mtcut::sim {
 namespace {
+
+using test::flap_def;
+using test::flap_stroke;
+using test::organ_def;
 
 engine::Mt organ_mt(int tets) {
   engine::MeshLoadDef load;
   load.builtin_tets = tets;
   return engine::build_mt(engine::load_mesh("builtin:ellipsoid", load).mesh);
-}
-
-WorldDef organ_def() {
-  WorldDef def;
-  def.fixed.kind = FixedRegion::Kind::kHalfSpace;  // the back of the organ
-  def.fixed.normal = Vec3(1, 0, 0);
-  def.fixed.offset = -0.06;
-  def.lod.near_radius = 0.02;
-  def.lod.near_error = 0.0;
-  def.lod.far_radius = 0.06;
-  def.lod.far_error = 1.0;
-  return def;
 }
 
 // The blade sweeps along the organ with its tip at the centre plane, disengaged.
@@ -98,17 +91,6 @@ TEST(World, DisengagedBladePushesTissue) {
   EXPECT_GE(closest, def.tool_radius - 1e-9);
 }
 
-// A stroke through the front end of the organ (fixed at its back, on a
-// floor), from y = -6 cm to +6 cm at x = 4 cm in `seconds`, engaged; then the
-// blade disengages where it is.
-ScalpelPath flap_stroke(double seconds) {
-  std::vector<ScalpelKeyframe> keys = {
-      {0.0, {Vec3(0.04, -0.06, 0.06), Vec3(0.04, -0.06, -0.07), true}},
-      {seconds, {Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), true}},
-      {seconds + 1e-3, {Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), false}}};
-  return ScalpelPath(keys);
-}
-
 // The flap stroke's poses in one frame (a trace sampled slower than the
 // blade moves, or a script's whole stroke): its polygon is one cut for
 // good, which a budget spreads over the frames after it (a part cut
@@ -120,12 +102,6 @@ std::vector<ScalpelPose> flap_in_one_frame() {
           {Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), false}};
 }
 const ScalpelPose kAway{Vec3(0.04, 0.06, 0.06), Vec3(0.04, 0.06, -0.07), false};
-
-WorldDef flap_def() {
-  WorldDef def = organ_def();
-  def.environment.floor = Plane{Vec3(0, 0, 1), -0.05};
-  return def;
-}
 
 // A tet as its corners' rest positions, sorted: what it is whatever the
 // numbering (the cutter reclaims dead slots and renumbers, at frames that
