@@ -14,9 +14,7 @@ std::vector<PieceReport> report_pieces(const sim::World& world) {
   const PieceLabels labels = label_pieces(mesh);
 
   const sim::SpringModel& model = world.model();
-  std::vector<std::int32_t> particle_of(world.mt().num_vertices(), -1);
-  for (std::size_t p = 0; p < model.num_particles(); ++p)
-    particle_of[model.particle_vertex[p].index()] = static_cast<std::int32_t>(p);
+  const std::vector<std::int32_t> particle_of = model.particle_of(world.mt().num_vertices());
 
   std::vector<PieceReport> pieces(labels.piece_tets.size());
   for (auto& piece : pieces) {

@@ -24,10 +24,7 @@ DeformedFrontier deform_frontier(const sim::World& world) {
 
   // A frontier vertex is a particle of the spring model: take its simulated
   // position. Should one not be (a model not rebuilt yet), ask the World.
-  std::vector<std::int32_t> particle(mt.num_vertices(), -1);  // (n_mt_vertices)
-  const sim::SpringModel& model = world.model();
-  for (std::size_t p = 0; p < model.num_particles(); ++p)
-    particle[model.particle_vertex[p].index()] = static_cast<std::int32_t>(p);
+  const std::vector<std::int32_t> particle = world.model().particle_of(mt.num_vertices());
   const bool all_simulated = std::all_of(out.vertex_ids.begin(), out.vertex_ids.end(),
                                          [&](engine::VertId v) { return particle[v.index()] >= 0; });
   if (all_simulated) {

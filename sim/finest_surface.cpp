@@ -116,9 +116,7 @@ FinestSurface carry_finest_surface(const Mt& mt, const engine::Frontier& frontie
     }
 
   // The carriers' corners as particles (numbered anew with every model).
-  std::vector<std::int32_t> particle_of(mt.num_vertices(), -1);
-  for (std::size_t p = 0; p < model.num_particles(); ++p)
-    particle_of[model.particle_vertex[p].index()] = static_cast<std::int32_t>(p);
+  const std::vector<std::int32_t> particle_of = model.particle_of(mt.num_vertices());
   out.particle.resize(n);
   for (std::size_t u = 0; u < n; ++u) {
     const engine::Tet& tet = mt.tet(out.carrier[u]);

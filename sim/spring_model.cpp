@@ -94,6 +94,12 @@ std::size_t SpringModel::num_fixed() const {
   return static_cast<std::size_t>(std::count(inv_mass.begin(), inv_mass.end(), 0.0));
 }
 
+std::vector<std::int32_t> SpringModel::particle_of(std::size_t num_vertices) const {
+  std::vector<std::int32_t> out(num_vertices, -1);
+  for (std::size_t p = 0; p < particle_vertex.size(); ++p) out[particle_vertex[p].index()] = static_cast<std::int32_t>(p);
+  return out;
+}
+
 engine::ValidationReport SpringModel::validate() const {
   engine::ValidationReport report;
   const std::size_t n = num_particles();

@@ -88,6 +88,8 @@ struct SpringModel {
   std::size_t num_particles() const { return mass.size(); }
   std::size_t num_springs() const { return spring_a.size(); }
   std::size_t num_fixed() const;
+  // (num_vertices) the particle of each vertex, -1 where none stands for it.
+  std::vector<std::int32_t> particle_of(std::size_t num_vertices) const;
 
   // Sizes agree, ids in range, masses positive and summing to total_mass
   // and agreeing with their volume sums, springs positive and distinct and

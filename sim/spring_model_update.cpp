@@ -298,10 +298,7 @@ std::optional<SpringModel> update_spring_model(const SpringModel& old, std::span
   for (const std::size_t s : to_set) model_parts::set_spring_constants(model, s, material);
   model_parts::finish_particles(model, material, fixed);
   if (material.volume_stiffness > 0) {
-    std::vector<std::int32_t> particle_of(rest_positions.size(), -1);
-    for (std::size_t i = 0; i < model.num_particles(); ++i)
-      particle_of[model.particle_vertex[i].index()] = static_cast<std::int32_t>(i);
-    model_parts::set_volume_terms(model, tets, particle_of, material);
+    model_parts::set_volume_terms(model, tets, model.particle_of(rest_positions.size()), material);
   }
   return model;
 }

@@ -165,9 +165,7 @@ DeformationSnapshot take_snapshot(const engine::Mt& mt, std::span<const engine::
   DeformationSnapshot snap;
   snap.simulated_tets.grow(mt.num_tets());
   for (const engine::TetId t : tets) snap.simulated_tets.insert(t);
-  snap.particle_of.assign(mt.num_vertices(), -1);
-  for (std::size_t p = 0; p < model.num_particles(); ++p)
-    snap.particle_of[model.particle_vertex[p].index()] = static_cast<std::int32_t>(p);
+  snap.particle_of = model.particle_of(mt.num_vertices());
   snap.x = state.x;
   snap.v = state.v;
   for (std::size_t p = 0; p < model.num_particles(); ++p) snap.momentum += model.mass[p] * state.v[p];

@@ -35,9 +35,7 @@ void add_face(SurfaceTopology& s, std::unordered_map<std::int64_t, std::int32_t>
 SurfaceTopology extract_surface(const engine::Mt& mt, const engine::Frontier& frontier,
                                 const sim::SpringModel& model, const PieceLabels& pieces,
                                 const std::vector<std::int32_t>& fragment_levels, std::size_t first_cut_vertex) {
-  std::vector<std::int32_t> particle_of(mt.num_vertices(), -1);
-  for (std::size_t p = 0; p < model.particle_vertex.size(); ++p)
-    particle_of[model.particle_vertex[p].index()] = static_cast<std::int32_t>(p);
+  const std::vector<std::int32_t> particle_of = model.particle_of(mt.num_vertices());
 
   SurfaceTopology s;
   s.pieces = pieces.count();
