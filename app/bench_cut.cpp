@@ -6,8 +6,8 @@
 #include <filesystem>
 
 #include "app/mesh_input_options.h"
+#include "cut/lut/split_table.h"
 #include "cut/mesh_cutter.h"
-#include "cut/split_table.h"
 #include "engine/input_error.h"
 #include "engine/mesh_loader.h"
 #include "engine/quantiles.h"

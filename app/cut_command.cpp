@@ -6,7 +6,7 @@
 #include "app/mesh_command.h"
 #include "app/mesh_input_options.h"
 #include "cut/cut_polygon.h"
-#include "cut/split_table.h"
+#include "cut/lut/split_table.h"
 #include "engine/input_error.h"
 #include "engine/mesh_loader.h"
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "cut/cut_polygon.h"
-#include "cut/split_table.h"
+#include "cut/lut/split_table.h"
 #include "cut/vertex_factory.h"
 #include "engine/tet_mesh.h"
 

@@ -14,7 +14,7 @@
 #include <span>
 #include <vector>
 
-#include "cut/split_table.h"
+#include "cut/lut/split_table.h"
 #include "cut/tet_classifier.h"
 #include "cut/vertex_factory.h"
 

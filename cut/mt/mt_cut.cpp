@@ -12,7 +12,6 @@
 #include <string>
 #include <tuple>
 
-#include "cut/recipe_faces.h"
 #include "cut/tet_splitter.h"
 #include "engine/radix_sort.h"
 #include "engine/reserve_geometric.h"

@@ -48,11 +48,11 @@
 
 #include "absl/container/flat_hash_map.h"
 #include "cut/cut_polygon.h"
+#include "cut/lut/split_table.h"
 #include "cut/mt/fragment_decomposition.h"
 #include "cut/mt/mt_change_report.h"
 #include "cut/mt/mt_cut_workspace.h"
 #include "cut/mt/part_record.h"
-#include "cut/split_table.h"
 #include "cut/tet_classifier.h"
 #include "cut/tet_splitter.h"
 #include "cut/vertex_factory.h"

@@ -1,4 +1,4 @@
-#include "cut/cut_trace.h"
+#include "cut/lut/cut_trace.h"
 
 #include <algorithm>
 #include <stdexcept>

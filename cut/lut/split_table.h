@@ -3,11 +3,13 @@
 // oriented (split_recipe.h). The LUT scheme's entries come from the table
 // generated when mtcut was built (baked_lut.h), so even a process's first
 // cut splits by lookup, as the paper's LUT; the 1:17 reference's are
-// generated on first use by its rule and kept.
+// generated on first use by its rule and kept. The cutters see the split
+// rules only through this header (cut/lut/CMakeLists.txt).
 
 #include <cstddef>
 
-#include "cut/split_recipe.h"
+#include "cut/lut/recipe_faces.h"  // piece_mask: the boundary masks of a recipe's pieces
+#include "cut/lut/split_recipe.h"
 
 namespace mtcut::cut {
 

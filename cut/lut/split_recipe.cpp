@@ -1,14 +1,14 @@
-#include "cut/split_recipe.h"
+#include "cut/lut/split_recipe.h"
 
 #include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "cut/recipe_faces.h"
-#include "cut/split_bielser17.h"
-#include "cut/split_lut.h"
-#include "cut/split_realisation.h"
+#include "cut/lut/recipe_faces.h"
+#include "cut/lut/split_bielser17.h"
+#include "cut/lut/split_lut.h"
+#include "cut/lut/split_realisation.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {

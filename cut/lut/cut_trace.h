@@ -21,7 +21,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cut/split_labels.h"
+#include "cut/lut/split_labels.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {

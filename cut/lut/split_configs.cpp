@@ -1,9 +1,9 @@
-#include "cut/split_configs.h"
+#include "cut/lut/split_configs.h"
 
 #include <algorithm>
 #include <array>
 
-#include "cut/cut_trace.h"
+#include "cut/lut/cut_trace.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {

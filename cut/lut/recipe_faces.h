@@ -9,7 +9,7 @@
 // every piece is a function of the recipe and of the split tet's own mask,
 // and the cutter pays a few bit operations per piece (mt_cut.cpp).
 
-#include "cut/split_labels.h"
+#include "cut/lut/split_labels.h"
 #include "engine/mt/mt.h"
 
 namespace mtcut::cut {

@@ -1,4 +1,4 @@
-#include "cut/split_realisation.h"
+#include "cut/lut/split_realisation.h"
 
 #include <cmath>
 #include <stdexcept>

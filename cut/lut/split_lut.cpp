@@ -1,10 +1,10 @@
-#include "cut/split_lut.h"
+#include "cut/lut/split_lut.h"
 
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
 
-#include "cut/piece_filler.h"
+#include "cut/lut/piece_filler.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {

@@ -1,4 +1,4 @@
-#include "cut/piece_filler.h"
+#include "cut/lut/piece_filler.h"
 
 #include <algorithm>
 #include <cmath>

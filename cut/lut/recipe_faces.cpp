@@ -1,4 +1,4 @@
-#include "cut/recipe_faces.h"
+#include "cut/lut/recipe_faces.h"
 
 #include <algorithm>
 

@@ -15,7 +15,7 @@
 // triangle is coned to the centre. No case analysis, no optimisation:
 // A 16, B 20, C 10, D 14, E 18, O 16 tets.
 
-#include "cut/cut_trace.h"
+#include "cut/lut/cut_trace.h"
 
 namespace mtcut::cut {
 

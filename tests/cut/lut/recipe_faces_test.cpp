@@ -3,15 +3,15 @@
 // every configuration, a piece face is surface exactly when it lies in a
 // surface face of the split tet, or in the cut plane on one piece only;
 // every other face is shared by two pieces.
-#include "cut/recipe_faces.h"
+#include "cut/lut/recipe_faces.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "cut/split_table.h"
+#include "cut/lut/split_table.h"
 #include "engine/tet_geometry.h"
-#include "tests/cut/recipe_checks.h"
+#include "tests/cut/lut/recipe_checks.h"
 
 namespace mtcut::cut {
 namespace {

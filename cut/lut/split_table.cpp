@@ -1,4 +1,4 @@
-#include "cut/split_table.h"
+#include "cut/lut/split_table.h"
 
 #include <algorithm>
 #include <atomic>
@@ -6,8 +6,8 @@
 #include <mutex>
 #include <vector>
 
-#include "cut/baked_lut.h"
-#include "cut/split_configs.h"
+#include "cut/lut/baked_lut.h"
+#include "cut/lut/split_configs.h"
 
 namespace mtcut::cut {
 namespace {

@@ -1,4 +1,4 @@
-#include "cut/split_bielser17.h"
+#include "cut/lut/split_bielser17.h"
 
 namespace mtcut::cut {
 

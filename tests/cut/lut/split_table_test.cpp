@@ -1,16 +1,16 @@
 // The LUT: every configuration a tet can be in, both schemes, random
 // geometry; DESIGN.md's table entries; counts per case.
-#include "cut/split_table.h"
+#include "cut/lut/split_table.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <map>
 
-#include "cut/baked_lut.h"
-#include "cut/split_configs.h"
-#include "cut/split_lut.h"
-#include "tests/cut/recipe_checks.h"
+#include "cut/lut/baked_lut.h"
+#include "cut/lut/split_configs.h"
+#include "cut/lut/split_lut.h"
+#include "tests/cut/lut/recipe_checks.h"
 
 namespace mtcut::cut {
 namespace {

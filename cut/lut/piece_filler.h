@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "cut/split_realisation.h"
+#include "cut/lut/split_realisation.h"
 
 namespace mtcut::cut {
 

@@ -34,7 +34,7 @@
 // DESIGN.md's minima: A 4, B 6, C 6, D 8, E 9 (O 18, above the bound of 12). The result is cached per
 // configuration by SplitTable, which also orients the tets.
 
-#include "cut/cut_trace.h"
+#include "cut/lut/cut_trace.h"
 
 namespace mtcut::cut {
 

@@ -11,7 +11,7 @@
 #include <array>
 #include <random>
 
-#include "cut/cut_trace.h"
+#include "cut/lut/cut_trace.h"
 
 namespace mtcut::cut {
 

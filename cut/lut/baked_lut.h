@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <span>
 
-#include "cut/split_labels.h"
+#include "cut/lut/split_labels.h"
 
 namespace mtcut::cut {
 

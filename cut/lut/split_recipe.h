@@ -17,7 +17,7 @@
 #include <optional>
 #include <string_view>
 
-#include "cut/cut_trace.h"
+#include "cut/lut/cut_trace.h"
 
 namespace mtcut::cut {
 

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "cut/cut_trace.h"
-#include "cut/split_configs.h"
-#include "cut/split_realisation.h"
-#include "cut/split_table.h"
+#include "cut/lut/cut_trace.h"
+#include "cut/lut/split_configs.h"
+#include "cut/lut/split_realisation.h"
+#include "cut/lut/split_table.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut::test {
