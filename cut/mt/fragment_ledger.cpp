@@ -126,19 +126,24 @@ void FragmentLedger::add(const Mt& mt, const MtChangeReport& cut, const MtChange
         whole.emplace_back(f);
     }
     std::sort(whole.begin(), whole.end());
-    for (FragId f : whole) add_whole(sums_, mt, f);
-    if (held) {  // the held splits in those fragments, taken out of their sums
-      const auto in_whole = [&](FragId f) { return std::binary_search(whole.begin(), whole.end(), f); };
-      for (const TetReplacement& r : held->replaced) {
-        std::array<std::pair<FragId, int>, 2> sides{{{FragId(), 1}, {FragId(), -1}}};
-        if (in_whole(r.birth)) sides[0].first = r.birth;
-        if (in_whole(r.death)) sides[1].first = r.death;
-        if (!sides[0].first.valid() && !sides[1].first.valid()) continue;
-        add_faces(sums_, mt, mt.tet(r.old), mt.boundary_mask(r.old), sides, 1, {});
-        for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {
-          const TetId t = held->made_tets[i];
-          add_faces(sums_, mt, mt.tet(t), mt.boundary_mask(t), sides, -1, {});
-        }
+    enter_whole(mt, whole, held);
+  }
+  drop_zeros(sums_);
+}
+
+void FragmentLedger::enter_whole(const Mt& mt, std::span<const FragId> fragments, const MtChangeReport* held) {
+  for (FragId f : fragments) add_whole(sums_, mt, f);
+  if (held) {  // the held splits in those fragments, taken out of their sums
+    const auto in_whole = [&](FragId f) { return std::binary_search(fragments.begin(), fragments.end(), f); };
+    for (const TetReplacement& r : held->replaced) {
+      std::array<std::pair<FragId, int>, 2> sides{{{FragId(), 1}, {FragId(), -1}}};
+      if (in_whole(r.birth)) sides[0].first = r.birth;
+      if (in_whole(r.death)) sides[1].first = r.death;
+      if (!sides[0].first.valid() && !sides[1].first.valid()) continue;
+      add_faces(sums_, mt, mt.tet(r.old), mt.boundary_mask(r.old), sides, 1, {});
+      for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {
+        const TetId t = held->made_tets[i];
+        add_faces(sums_, mt, mt.tet(t), mt.boundary_mask(t), sides, -1, {});
       }
     }
   }

@@ -56,6 +56,12 @@ class FragmentLedger {
   // now): a fragment entered by what its tets sum to is entered as if they
   // were whole, so that the ledger stays what the commits owe.
   void add(const Mt& mt, const MtChangeReport& cut, const MtChangeReport* held = nullptr);
+  // Enters `fragments` (sorted, unique, none in the ledger) by what their
+  // tets sum to, `held`'s splits taken out (as add() does): a pass over
+  // their tets. The fragments a part's commits changed, entered so when it
+  // meets an older crack, owe what add() would have summed commit by commit
+  // (each balanced before the part; PartRecord::meet_old_crack).
+  void enter_whole(const Mt& mt, std::span<const FragId> fragments, const MtChangeReport* held);
 
   // The fragments (not the root, the drain or in `skip`, which is sorted)
   // that stay out of balance once `cut` is added, sorted. With an empty
@@ -63,6 +69,7 @@ class FragmentLedger {
   std::vector<FragId> unbalanced_with(const Mt& mt, const MtChangeReport& cut, std::span<const FragId> skip) const;
 
   bool empty() const { return sums_.empty(); }
+  friend bool operator==(const FragmentLedger& a, const FragmentLedger& b) { return a.sums_ == b.sums_; }
   bool owes(FragId f) const;  // the ledger has entries for f
   std::size_t size() const { return sums_.size(); }  // (fragment, face) entries
   // The MT was compacted (Mt::compact keeps the vertices' order, so a

@@ -325,6 +325,10 @@ void MtCut::add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, CutClas
   }
 }
 
+bool MtCut::changes_earlier_pieces(const Mt& mt) const {
+  return std::any_of(pending_.begin(), pending_.end(), [&](const Pending& p) { return mt.error_inherited(p.tet); });
+}
+
 std::size_t MtCut::job_cost(const Mt& mt, std::size_t job) const {
   if (job_done_[job]) return 0;
   std::size_t cost = 1;

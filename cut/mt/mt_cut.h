@@ -129,6 +129,8 @@ class MtCut {
   // points the cut makes.
   std::size_t tets_to_change() const { return pending_.size(); }
   std::size_t tets_left_whole() const { return left_whole_; }
+  // Some tet to cut or relabel is a piece of an earlier cut (Mt::error_inherited).
+  bool changes_earlier_pieces(const Mt& mt) const;
   // Tets found to split and not crossed completely (the polygon's outline
   // passes through them, or a vertex lies on its plane), whatever
   // `select`: the crack's front in the tissue.

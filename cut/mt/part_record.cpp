@@ -38,7 +38,30 @@ void PartRecord::add(const Mt& mt, const MtChangeReport& commit, const MtChangeR
       promoted_.emplace_back(it->first, it->second);
       held_points_.erase(it++);
     }
-  owed_.add(mt, commit, held);
+  if (met_) {
+    owed_.add(mt, commit, held);
+    return;
+  }
+  const auto change = [&](FragId f) {
+    if (f.valid() && f != mt.root() && f != mt.drain()) changed_.push_back(f);
+  };
+  for (const TetReplacement& r : commit.replaced) {
+    change(r.birth);
+    change(r.death);
+  }
+  for (const FragmentSplit& split : commit.fragment_splits) {
+    change(split.old);
+    for (FragId part : split.parts) change(part);
+  }
+}
+
+void PartRecord::meet_old_crack(const Mt& mt, const MtChangeReport* held) {
+  if (met_) return;
+  std::vector<FragId> changed = changed_;
+  std::sort(changed.begin(), changed.end());
+  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+  owed_.enter_whole(mt, changed, held);
+  met_ = true;
 }
 
 std::vector<MadeVertex> PartRecord::hold(const Mt& mt, MtChangeReport& front) {
@@ -101,6 +124,7 @@ void PartRecord::take_back(const MtChangeReport* commit, Before before) {
   owed_ = std::move(before.owed);
   met_ = before.met;
   front_ = std::move(before.front);
+  changed_.resize(std::min(changed_.size(), before.changed));
 }
 
 std::vector<MadeVertex> PartRecord::committed_points() const {
@@ -168,6 +192,9 @@ engine::ValidationReport PartRecord::validate(const Mt& mt, const MtChangeReport
   }
   for (std::uint8_t m : made_) made += m == kCommitted;
   if (made != points_.size()) report.add("part record: committed points miscounted");
+  if (!met_ && !owed_.empty()) report.add("part record: a ledger before the part met an older crack");
+  for (FragId f : changed_)
+    if (f.index() >= mt.num_fragments()) report.add("part record: changed fragment " + std::to_string(f.value) + " is not in the MT");
   for (auto& p : owed_.validate(mt, since).problems) report.add("part record: " + p);
   return report;
 }

@@ -95,14 +95,19 @@ class PartRecord {
   // splits the finer tets of a fragment its polygon crosses completely, and
   // only the front or the end the coarser ones the outline passes through.
   // The cutter's guard checks the front and the end against it once the
-  // part has met an older crack (a cut of it split a piece of an earlier
+  // part has met an older crack (a cut of it splits a piece of an earlier
   // cut: a turn's junction, an older stroke), so a part commits there as
   // anywhere else. Until then each of its cuts is one planar cut through
   // tets no cut had touched, conforming by construction, and the guard
-  // skips that check (cut_guard.h).
+  // skips that check (cut_guard.h): the record keeps only which fragments
+  // the commits changed, and the ledger is empty.
   const FragmentLedger& owed() const { return owed_; }
   bool met_old_crack() const { return met_; }
-  void meet_old_crack() { met_ = true; }
+  // The part's next cut splits a piece of an earlier cut; called before
+  // that cut changes the MT. The fragments the commits changed enter the
+  // ledger by what their tets sum to (they balanced before the part's first
+  // commit), `held` (the front kept beside the cut, may be null) taken out.
+  void meet_old_crack(const Mt& mt, const MtChangeReport* held);
 
   // A committed cut finished (and was kept): its pieces and points join,
   // and what it owes the fragments.
@@ -123,8 +128,9 @@ class PartRecord {
     FragmentLedger owed;
     bool met = false;
     std::optional<engine::Aabb> front;
+    std::size_t changed = 0;  // fragments the commits had changed before the part met an older crack
   };
-  Before before_commit() const { return {owed_, met_, front_}; }
+  Before before_commit() const { return {owed_, met_, front_, changed_.size()}; }
   void take_back(const MtChangeReport* commit, Before before);
   // The MT was compacted (Mt::compact): ids follow; the held front is
   // released (its holder holds it again, renumbered).
@@ -132,8 +138,8 @@ class PartRecord {
 
   // Every owned tet is alive, every point a vertex some owned tet uses
   // (held ones: some held tet);
-  // the ledger holds what the fragments it names are out of balance by,
-  // with `since` (the changes made after the last commit: the part's held
+  // the ledger is empty until the part meets an older crack, then holds
+  // what the fragments it names are out of balance by, with `since` (the changes made after the last commit: the part's held
   // front, or its cut in progress; may be null).
   engine::ValidationReport validate(const Mt& mt, const MtChangeReport* since = nullptr) const;
 
@@ -148,6 +154,9 @@ class PartRecord {
   std::optional<engine::Aabb> front_;
   FragmentLedger owed_;
   bool met_ = false;
+  // The fragments (not the root or the drain) the commits changed before
+  // the part met an older crack, in commit order, repeated.
+  std::vector<FragId> changed_;
   absl::flat_hash_map<PointKey, VertId, PointKeyHash> points_;
   std::vector<TetId> held_tets_;
   absl::flat_hash_map<PointKey, VertId, PointKeyHash> held_points_;

@@ -283,6 +283,11 @@ void TimeCriticalCutter::start_next(const Mt& mt, TetBvh& bvh, const Frontier& f
         for (VertId v : mt.tet(r.old)) front.extend(mt.position(v));
     a.record->set_front(front);
   }
+  // A part whose cut splits a piece of an earlier cut meets an older
+  // crack: from here on what its commits owe is checked (after the frame's
+  // `before`, so that a frame taken back has not met it either).
+  if (a.record && !a.record->met_old_crack() && a.cut->changes_earlier_pieces(mt))
+    a.record->meet_old_crack(mt, kept_ && kept_->record == a.record ? &kept_->changes : nullptr);
   const auto jobs = a.cut->jobs();
   for (std::size_t j = 0; j < jobs.size(); ++j)
     if (frontier.is_visible(jobs[j])) a.order.push_back(j);
@@ -352,12 +357,6 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     const bool with_commit =
         a.select == CutSelect::kFront && frame_ && frame_->record == a.record.get() && frame_->commit;
     if (with_commit) commit = {&frame_->commit->changes, frame_->commit->first_new_vertex};
-    // A part whose cut splits a piece of an earlier cut meets an older
-    // crack: from here on what its commits owe is checked.
-    if (a.record && !a.record->met_old_crack() &&
-        std::any_of(a.tx.changes.replaced.begin(), a.tx.changes.replaced.end(),
-                    [&](const TetReplacement& r) { return mt.error_inherited(r.old); }))
-      a.record->meet_old_crack();
     // A front with splits kept from earlier frames: they are of the part's
     // crack, checked when they were made, but where the fragments' balance
     // is checked (cut_guard.h) the whole front pays what the commits owe.

@@ -279,6 +279,53 @@ TEST(PartRecord, APartThatMetAnOlderCrackKeepsItsFrontToo) {
   }
 }
 
+// A vertical polygon from above the top of `box` down to the middle of its
+// height, half across, slightly oblique; `depth` (1 the middle) moves its
+// bottom down: a commit of it leaves its outline's tets whole.
+cut::CutPolygon half_across(const engine::Aabb& box, double depth = 1.0) {
+  const Vec3 size = box.hi - box.lo, c = box.center();
+  const double bottom = box.hi.z() - depth * (box.hi.z() - c.z());
+  return cut::CutPolygon::from_points(
+      {Vec3(c.x() - 0.6 * size.x(), c.y() + 0.013 * size.y(), box.hi.z() + 0.1 * size.z()),
+       Vec3(c.x() + 0.1 * size.x(), c.y() + 0.017 * size.y(), box.hi.z() + 0.1 * size.z()),
+       Vec3(c.x() + 0.1 * size.x(), c.y() + 0.017 * size.y(), bottom),
+       Vec3(c.x() - 0.6 * size.x(), c.y() + 0.013 * size.y(), bottom)});
+}
+
+// A part that meets an older crack only after some commits owes the
+// fragments, from then on, exactly what a part that had met one before its
+// first commit owes: the fragments its commits changed, entered by what
+// their tets sum to, hold what the commits added up commit by commit.
+TEST(PartRecord, APartMeetingAnOlderCrackLateOwesWhatItsCommitsAddUpTo) {
+  for (const std::string name : {"ellipsoid", "box", "liver"}) {
+    Mt mt = cut_test_mt(name);
+    engine::TetBvh bvh(mt);
+    const engine::Aabb box = mt_box(mt);
+    cut::PartRecord early(half_across(box)), late(half_across(box));
+    early.meet_old_crack(mt, nullptr);  // before any commit: every commit is added to its ledger
+    std::size_t commits = 0;
+    for (const double depth : {0.6, 1.0, 1.4}) {
+      cut::CutMtOptions options;
+      options.def.record = &early;
+      options.def.select = cut::CutSelect::kComplete;
+      const cut::MtChangeReport commit = cut::cut_mt(mt, bvh, half_across(box, depth), {}, options);
+      early.add(mt, commit);
+      late.add(mt, commit);
+      commits += !commit.made_tets.empty();  // (the MT conforms again once a front splits the outline's tets)
+      EXPECT_TRUE(early.validate(mt).ok()) << name << ": " << early.validate(mt).summary();
+      EXPECT_TRUE(late.validate(mt).ok()) << name << ": " << late.validate(mt).summary();
+      EXPECT_TRUE(late.owed().empty()) << name << ": a ledger before the part met an older crack";
+    }
+    ASSERT_GE(commits, 2u) << name << ": the polygons committed nothing twice; the test tests nothing";
+    ASSERT_FALSE(early.owed().empty()) << name << ": the commits owe the fragments nothing; the test tests nothing";
+    late.meet_old_crack(mt, nullptr);
+    EXPECT_TRUE(late.met_old_crack());
+    EXPECT_EQ(late.owed().size(), early.owed().size()) << name;
+    EXPECT_TRUE(late.owed() == early.owed()) << name;
+    EXPECT_TRUE(late.validate(mt).ok()) << name << ": " << late.validate(mt).summary();
+  }
+}
+
 // A commit taken back leaves the record as it was before it: no piece or
 // point of it, and the ledger and the front it had.
 TEST(PartRecord, ACommitTakenBackLeavesTheRecordAsBefore) {
@@ -286,17 +333,12 @@ TEST(PartRecord, ACommitTakenBackLeavesTheRecordAsBefore) {
   Mt mt = original;
   engine::TetBvh bvh(mt);
   const engine::Aabb box = mt_box(mt);
-  const Vec3 size = box.hi - box.lo, c = box.center();
-  // A vertical polygon from above the top to the middle of the height, half
-  // across: its outline passes through the tissue (a front stays whole).
-  const cut::CutPolygon polygon = cut::CutPolygon::from_points(
-      {Vec3(c.x() - 0.6 * size.x(), c.y() + 0.013 * size.y(), box.hi.z() + 0.1 * size.z()),
-       Vec3(c.x() + 0.1 * size.x(), c.y() + 0.017 * size.y(), box.hi.z() + 0.1 * size.z()),
-       Vec3(c.x() + 0.1 * size.x(), c.y() + 0.017 * size.y(), c.z()),
-       Vec3(c.x() - 0.6 * size.x(), c.y() + 0.013 * size.y(), c.z())});
+  // Its outline passes through the tissue (a front stays whole).
+  const cut::CutPolygon polygon = half_across(box);
   cut::PartRecord record(polygon);
   const std::optional<engine::Aabb> front_before = engine::Aabb{box.lo, box.center()};
   record.set_front(front_before);
+  const cut::PartRecord::Before before = record.before_commit();
   cut::CutMtOptions options;
   options.def.record = &record;
   options.def.select = cut::CutSelect::kComplete;
@@ -304,13 +346,17 @@ TEST(PartRecord, ACommitTakenBackLeavesTheRecordAsBefore) {
   ASSERT_GT(commit.made_tets.size(), 0u);
   record.add(mt, commit);
   record.set_front(engine::Aabb{box.center(), box.hi});
+  record.meet_old_crack(mt, nullptr);  // as the frame's front would, splitting a piece of an older crack
   ASSERT_GT(record.num_owned(), 0u);
   ASSERT_FALSE(record.committed_points().empty());
   ASSERT_FALSE(record.owed().empty()) << "the commit owes the fragments nothing: it tests nothing";
   EXPECT_TRUE(record.validate(mt).ok()) << record.validate(mt).summary();
-  record.take_back(&commit, {cut::FragmentLedger(), false, front_before});
+  record.take_back(&commit, before);
   EXPECT_EQ(record.num_owned(), 0u);
   EXPECT_TRUE(record.committed_points().empty());
+  EXPECT_TRUE(record.owed().empty());
+  EXPECT_FALSE(record.met_old_crack());
+  record.meet_old_crack(mt, nullptr);  // nothing committed: nothing owed
   EXPECT_TRUE(record.owed().empty());
   ASSERT_TRUE(record.front().has_value());
   EXPECT_EQ(record.front()->lo, front_before->lo);
