@@ -6,6 +6,7 @@
 #include "app/bench_sim.h"
 #include "app/bench_stroke.h"
 #include "app/bench_table1.h"
+#include "app/cli_checks.h"
 #include "app/json_report.h"
 
 namespace mtcut::app {
@@ -30,10 +31,10 @@ void register_bench_command(CLI::App& app) {
   CLI::App* sim = bench->add_subcommand(
       "sim", "Spring step on a builtin box (~10k vertices, ~60k springs): symplectic Euler, implicit Euler at 1/60 s, "
              "and a plain SoA reference loop");
-  sim->add_option("--tets", sim_def->tets, "target tet count of the box")->capture_default_str()->check(CLI::PositiveNumber);
+  sim->add_option("--tets", sim_def->tets, "target tet count of the box")->capture_default_str()->check(positive_number());
   sim->add_option("--runs", sim_def->runs, "timed runs, median reported (each implicit run replays the same 3 s from rest)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   sim->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
   sim->callback([sim_def, json] { print(run_sim_bench(*sim_def), *json); });
 
@@ -45,10 +46,10 @@ void register_bench_command(CLI::App& app) {
   cut->add_option("--organ", cut_def->organ, "the second mesh: builtin:NAME or a file")->capture_default_str();
   cut->add_option("--tets", cut_def->organ_tets, "target tet count of a builtin organ")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cut->add_option("--runs", cut_def->runs, "timed runs, each cut on a fresh copy (median reported)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cut->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
   cut->callback([cut_def, json] { print(run_cut_bench(*cut_def), *json); });
 
@@ -58,7 +59,7 @@ void register_bench_command(CLI::App& app) {
                 "separating the object; split and DAG update times beside the paper's");
   table1->add_option("--runs", table1_def->runs, "timed runs per row, each on a fresh copy of the MT (median reported)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   table1->add_option("--markdown", table1_def->markdown, "also write the table as markdown, with the machine");
   table1->add_flag("--json", *json, "print JSON (the default output is JSON as well)");
   table1->callback([table1_def, json] { print(run_table1_bench(*table1_def), *json); });
@@ -71,11 +72,11 @@ void register_bench_command(CLI::App& app) {
   stroke->add_option("--mesh", stroke_def->liver, "the real mesh instead of ../shared/meshes/liver2.obj");
   stroke->add_option("--tets", stroke_def->organ_tets, "target tet count of the builtin organ")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   stroke->add_option("--steps", stroke_def->steps, "step counts of the progressive cuts")->capture_default_str();
   stroke->add_option("--runs", stroke_def->runs, "runs per stroke and step count (median of each figure)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   stroke->add_option("--strokes", stroke_def->strokes, "the strokes to cut (default: all)")
       ->check(CLI::IsMember({"straight", "curved", "l_turn", "tip_inside"}));
   stroke->add_flag("--json", *json, "print JSON (the default output is JSON as well)");

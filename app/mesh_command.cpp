@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/cli_checks.h"
 #include "app/json_report.h"
 #include "app/mesh_input_options.h"
 #include "engine/input_error.h"
@@ -75,7 +76,7 @@ void register_mesh_command(CLI::App& app) {
   cmd->add_option("--quality", options->load.meshing.radius_edge_ratio,
                   "TetGen radius-edge ratio bound when meshing (0 = no quality refinement)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_option("--min-dihedral", options->load.meshing.min_dihedral_deg, "dihedral angle (degrees) TetGen aims for")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 30.0));

@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "app/cli_checks.h"
 #include "engine/input_error.h"
 
 namespace mtcut::app {
@@ -11,16 +12,16 @@ namespace mtcut::app {
 void add_mesh_input_options(CLI::App& cmd, engine::MeshLoadDef& load, MeshInputOptions& options) {
   cmd.add_option("--tets", load.builtin_tets, "target tet count of a builtin shape")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd.add_option("--size", options.size, "extents x,y,z of a builtin shape in metres")->delimiter(',');
   cmd.add_option("--max-volume", load.meshing.max_volume,
                  "largest tet volume in m^3 when meshing a surface (0 = none)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   CLI::Option* units =
       cmd.add_option("--units", options.units, "the mesh file's length unit: m (default), dm, cm or mm");
   CLI::Option* scale =
       cmd.add_option("--scale", options.scale, "the mesh file's length unit in metres (0.001 for millimetres)")
-          ->check(CLI::PositiveNumber);
+          ->check(positive_number());
   units->excludes(scale);
   cmd.add_flag("--strict", load.strict,
                "refuse a surface that is open, non-manifold or crosses itself instead of repairing it");

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "app/cli_checks.h"
 #include "app/json_report.h"
 #include "app/mesh_input_options.h"
 #include "engine/input_error.h"
@@ -120,14 +121,14 @@ void register_mt_command(CLI::App& app) {
   cmd->add_option("--collapses-per-fragment", options->build.collapses_per_fragment,
                   "neighbouring collapses grouped into one fragment")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_flag("--no-preserve-boundary", options->no_preserve_boundary,
                 "let collapses move the surface (by at most their error and --max-surface-deviation)");
   cmd->add_option("--max-surface-deviation", options->build.max_surface_deviation,
                   "with --no-preserve-boundary: how far the surface may move in all, as a fraction of the mesh's "
                   "bounding-box diagonal")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   add_mesh_input_options(*cmd, options->load, options->mesh_input);
   cmd->add_flag("--no-validate", options->skip_validation, "skip MT::validate() (large meshes)");
   cmd->add_flag("--json", options->json, "print one JSON object");

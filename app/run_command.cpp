@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 
+#include "app/cli_checks.h"
 #include "app/material_file.h"
 #include "app/mesh_input_options.h"
 #include "app/run_interrupt.h"
@@ -168,7 +169,7 @@ void register_run_command(CLI::App& app) {
                   "the scenario file (config/scenarios/*.toml); default: the built-in default scenario, " +
                       default_scenario_path());
   cmd->add_option("--frames", options->run.frames_override, "run this many frames instead of the scenario's")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--out", options->run.out_dir,
                   "the output folder (made if missing); default: out/<scenario file name without .toml>");
   cmd->add_option("--record", options->run.record_path,

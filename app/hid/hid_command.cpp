@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "app/cli_checks.h"
 #include "app/hid/device_choice.h"
 #include "app/hid/hid_path.h"
 #include "app/hid/hidapi_transport.h"
@@ -132,7 +133,7 @@ void register_hid_command(CLI::App& app) {
   monitor->add_option("--profile", options->profile, "a profile name in config/hid or a .toml file (default: the one that fits)");
   monitor->add_option("--device", options->device, "the device's path (default: the first one a profile fits)");
   monitor->add_option("--seconds", options->seconds, "stop after this long (default: until Ctrl-C)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   monitor->add_option("--record-hid", options->record, "record the raw reports to this file (.hidrec)");
   monitor->callback([options] { run_monitor(*options); });
 

@@ -5,6 +5,7 @@
 #include <memory>
 #include <numeric>
 
+#include "app/cli_checks.h"
 #include "app/hid/device_choice.h"
 #include "app/hid/hid_feed.h"
 #include "app/hid/hidapi_transport.h"
@@ -107,7 +108,7 @@ void register_view_command(CLI::App& app) {
       "--screenshot out.png");
   cmd->add_option("scenario", options->scenario, "the scenario file (default: config/scenarios/default.toml)");
   cmd->add_option("--frames", options->frames, "play this many frames of the scenario before showing it")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_option("--screenshot", options->screenshot, "write the last frame to this PNG and exit");
   cmd->add_option("--width", options->width, "window width in pixels")->check(CLI::Range(64, 8192));
   cmd->add_option("--height", options->height, "window height in pixels")->check(CLI::Range(64, 8192));
