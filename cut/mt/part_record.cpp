@@ -49,10 +49,7 @@ void PartRecord::add(const Mt& mt, const MtChangeReport& commit, const MtChangeR
     change(r.birth);
     change(r.death);
   }
-  for (const FragmentSplit& split : commit.fragment_splits) {
-    change(split.old);
-    for (FragId part : split.parts) change(part);
-  }
+  for (FragId f : decomposed_fragments(commit)) change(f);
 }
 
 void PartRecord::meet_old_crack(const Mt& mt, const MtChangeReport* held) {
@@ -194,7 +191,8 @@ engine::ValidationReport PartRecord::validate(const Mt& mt, const MtChangeReport
   if (made != points_.size()) report.add("part record: committed points miscounted");
   if (!met_ && !owed_.empty()) report.add("part record: a ledger before the part met an older crack");
   for (FragId f : changed_)
-    if (f.index() >= mt.num_fragments()) report.add("part record: changed fragment " + std::to_string(f.value) + " is not in the MT");
+    if (f.index() >= mt.num_fragments())
+      report.add("part record: changed fragment " + std::to_string(f.value) + " is not in the MT");
   for (auto& p : owed_.validate(mt, since).problems) report.add("part record: " + p);
   return report;
 }

@@ -139,8 +139,9 @@ class PartRecord {
   // Every owned tet is alive, every point a vertex some owned tet uses
   // (held ones: some held tet);
   // the ledger is empty until the part meets an older crack, then holds
-  // what the fragments it names are out of balance by, with `since` (the changes made after the last commit: the part's held
-  // front, or its cut in progress; may be null).
+  // what the fragments it names are out of balance by, with `since` (the
+  // changes made after the last commit: the part's held front, or its cut
+  // in progress; may be null).
   engine::ValidationReport validate(const Mt& mt, const MtChangeReport* since = nullptr) const;
 
  private:

@@ -19,7 +19,8 @@ TEST(CliChecks, APositiveNumberIsGreaterThanZero) {
   for (const std::string good : {"1", "0.5", "1e-9", "8000"}) EXPECT_EQ(checked(check, good), "") << good;
   EXPECT_EQ(checked(check, "0"), "'0' must be greater than 0");
   EXPECT_EQ(checked(check, "-2.5"), "'-2.5' must be greater than 0");
-  for (const std::string bad : {"abc", "inf", "nan", ""}) EXPECT_EQ(checked(check, bad), "'" + bad + "' is not a number");
+  for (const std::string bad : {"abc", "inf", "nan", ""})
+    EXPECT_EQ(checked(check, bad), "'" + bad + "' is not a number") << bad;
 }
 
 TEST(CliChecks, ANonNegativeNumberIsZeroOrMore) {
