@@ -227,6 +227,38 @@ bool CutPolygon::box_projects_inside(const engine::Aabb& box, double slack) cons
   return true;
 }
 
+engine::Aabb CutPolygon::box_beyond(const CutPolygon& inner) const {
+  // The points inner does not cover are the union, over inner's edges, of
+  // this polygon's part on the outer side of the edge's line. A part none
+  // of whose corners lies beyond the line by more than rounding is passed
+  // over: the edges the two outlines share (a part grown at its front
+  // only) widen nothing.
+  std::vector<Eigen::Vector2d> in;
+  in.reserve(inner.corners_.size());
+  for (const Vec3& x : inner.corners_) in.push_back(project(x));
+  const std::size_t m = in.size(), n = corners2d_.size();
+  double twice = 0;
+  for (std::size_t i = 0; i < m; ++i) twice += cross2d(in[i], in[(i + 1) % m]);
+  if (twice < 0) std::reverse(in.begin(), in.end());  // counter-clockwise in this frame
+  engine::Aabb box;
+  std::vector<double> d(n);  // (n) each corner's distance inside the edge's line, times its length
+  for (std::size_t k = 0; k < m; ++k) {
+    const Eigen::Vector2d& a = in[k];
+    const Eigen::Vector2d e = in[(k + 1) % m] - a;
+    double beyond = 0;
+    for (std::size_t i = 0; i < n; ++i) beyond = std::min(beyond, d[i] = cross2d(e, corners2d_[i] - a));
+    if (beyond >= -1e-9 * diameter_ * e.norm()) continue;
+    const auto extend = [&](const Eigen::Vector2d& q) { box.extend(origin_ + q.x() * axis_u_ + q.y() * axis_v_); };
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t j = (i + 1) % n;
+      if (d[i] <= 0) extend(corners2d_[i]);
+      if ((d[i] < 0 && d[j] > 0) || (d[i] > 0 && d[j] < 0))
+        extend(corners2d_[i] + (d[i] / (d[i] - d[j])) * (corners2d_[j] - corners2d_[i]));
+    }
+  }
+  return box;
+}
+
 int CutPolygon::line_crossing(const Vec3& a, const Vec3& b) const {
   bool pos = false, neg = false, zero = false;
   const std::size_t n = corners_.size();

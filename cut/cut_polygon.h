@@ -70,6 +70,10 @@ class CutPolygon {
   // projects strictly inside the outline by far more than rounding, so that
   // projects_inside() is +1 for all of them.
   bool box_projects_inside(const engine::Aabb& box, double slack = 0) const;
+  // A box holding every point of this polygon that `inner`, a polygon of
+  // the same plane, does not cover, up to rounding (empty when it covers
+  // them all): where a grown polygon cuts what its former one did not.
+  engine::Aabb box_beyond(const CutPolygon& inner) const;
 
   // Exact: does the line through a and b pass through the polygon?
   // +1 strictly inside, 0 through its outline, -1 outside (or parallel).

@@ -164,26 +164,32 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   // A part's committed pieces are never cut again (part_record.h).
   const PartRecord* record = def.record;
   std::vector<TetId> found;
+  const auto searched = [&](TetId t) { return !(record && record->owns(t)); };
   const auto add = [&](TetId t) {
-    if (!(record && record->owns(t)) && classifier.may_be_cut(mt.tet(t))) found.push_back(t);
+    if (classifier.may_be_cut(mt.tet(t))) found.push_back(t);
     return true;
   };
   if (def.candidates) {
     for (TetId t : *def.candidates)
-      if (mt.alive(t) && engine::tet_box_overlaps(mt, t, def.search ? near_front : box)) add(t);
+      if (mt.alive(t) && searched(t) && engine::tet_box_overlaps(mt, t, def.search ? near_front : box)) add(t);
   } else if (def.search || !def.grown_from) {
     bvh.for_each_overlapping(
         mt, def.search ? near_front : box,
-        [&](const engine::Aabb& node) { return polygon_.box_may_touch_plane(node, displacement); }, add);
+        [&](const engine::Aabb& node) { return polygon_.box_may_touch_plane(node, displacement); }, searched, add);
   }
   if (def.grown_from && !def.candidates) {
+    // Where the polygon covers what grown_from did not, within the snap
+    // reach: not along the outline the two share.
+    engine::Aabb grown = polygon_.box_beyond(*def.grown_from);
+    grown.lo = box.lo.cwiseMax(grown.lo - Vec3::Constant(margin));
+    grown.hi = box.hi.cwiseMin(grown.hi + Vec3::Constant(margin));
     bvh.for_each_overlapping(
-        mt, box,
+        mt, grown,
         [&](const engine::Aabb& node) {
           return polygon_.box_may_touch_plane(node, displacement) &&
                  !def.grown_from->box_projects_inside(node, margin);
         },
-        add);
+        searched, add);
   }
   sort_unique(found, workspace_->id_bits);  // BVH order must not leak into the result
   classifier.expect_candidates(found.size());

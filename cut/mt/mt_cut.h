@@ -76,20 +76,23 @@ struct MtCutDef {
   const PartRecord* record = nullptr;
   CutSelect select = CutSelect::kAll;
   // Every tet the cut may change lies in the box `search` (grown by the
-  // snap reach like the polygon's), or, when `grown_from` is given too, does
-  // not project inside `grown_from` (a polygon of the same plane): a part's
+  // snap reach like the polygon's), or, when `grown_from` is given too,
+  // within the snap reach of where the polygon covers what `grown_from` (a
+  // polygon of the same plane) does not (CutPolygon::box_beyond): a part's
   // frame searches only around its front and where its polygon grew, and
-  // walks none of the index's nodes that lie behind. Read while the cut is
-  // searched.
+  // walks none of the index's nodes that lie behind it or along the outline
+  // the two polygons share (the last frame's front split the tets there:
+  // its record holds them, or they were taken back and lie in `search`).
+  // Read while the cut is searched.
   const engine::Aabb* search = nullptr;
   const CutPolygon* grown_from = nullptr;
   // The tets the search takes instead of walking the index (neither walk
   // above is made): those the last cut of the same polygon found
   // (candidates()), when nothing but that cut has edited the MT since and
   // every tet this cut may change is among them (a part's front after its
-  // commit: a tet the outline passes through reaches past the commit's
-  // `grown_from`, so the commit found it, and the tets it made are its
-  // record's). The dead and those off the search box are passed over.
+  // commit: a tet the outline passes through lies where the polygon grew
+  // or in the commit's `search`, so the commit found it, and the tets it
+  // made are its record's). The dead and those off the search box are passed over.
   // Read while the cut is searched.
   const std::vector<TetId>* candidates = nullptr;
   // Step 3 (UpdateProcessFragment): the fragments the cut separates are

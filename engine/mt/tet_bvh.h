@@ -76,6 +76,14 @@ class TetBvh {
   // tree when the cut spans the object).
   template <class KeepNode, class Visit>
   void for_each_overlapping(const Mt& mt, const Aabb& box, KeepNode&& keep_node, Visit&& visit) const {
+    for_each_overlapping(mt, box, keep_node, [](TetId) { return true; }, visit);
+  }
+  // The same, passing over the tets keep_tet(TetId) rejects before their
+  // boxes are read (a part's cut skips its committed pieces, which crowd
+  // the nodes along its plane).
+  template <class KeepNode, class KeepTet, class Visit>
+  void for_each_overlapping(const Mt& mt, const Aabb& box, KeepNode&& keep_node, KeepTet&& keep_tet,
+                            Visit&& visit) const {
     const auto nodes = bvh_.nodes();
     bvh_.walk(
         [&](std::int32_t n) {
@@ -83,7 +91,7 @@ class TetBvh {
           return node.overlaps(box) && keep_node(node);
         },
         [&](std::int32_t n) {
-          return visit_leaf(n, [&](TetId t) { return !tet_box_overlaps(mt, t, box) || visit(t); });
+          return visit_leaf(n, [&](TetId t) { return !keep_tet(t) || !tet_box_overlaps(mt, t, box) || visit(t); });
         });
   }
   // Every indexed tet holding p (closed tets, exact).

@@ -229,5 +229,62 @@ TEST(CutPolygon, OnPlaneOfKeepsThePlaneBitForBit) {
                engine::InputError);
 }
 
+// box_beyond holds every point of a grown polygon that its former one
+// does not cover (beyond rounding), and no more than where it grew: a part grown at its
+// front only gives a box no wider than the growth across the front.
+TEST(CutPolygon, BoxBeyondHoldsWhatTheFormerPolygonDoesNotCover) {
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), w(0.0, 1.0);
+  std::size_t outside = 0, empty = 0;
+  for (int round = 0; round < 300; ++round) {
+    const Vec3 p0(u(rng), u(rng), u(rng));
+    const Vec3 a = Vec3(u(rng), u(rng), u(rng)).normalized();
+    const Vec3 b = a.cross(Vec3(u(rng), u(rng), u(rng))).normalized();
+    std::vector<Vec3> points;
+    for (int k = 0; k < 3 + round % 5; ++k) points.push_back(p0 + u(rng) * a + u(rng) * b);
+    const CutPolygon inner = CutPolygon::on_plane_of(CutPolygon::from_points({p0, p0 + a, p0 + a + b}), points);
+    // Grown by a few points (none in a tenth of the rounds), either orientation.
+    std::vector<Vec3> grown = inner.corners();
+    if (round % 3 == 1) std::reverse(grown.begin(), grown.end());
+    if (round % 10 != 0)
+      for (int k = 0; k < 1 + round % 3; ++k) grown.push_back(p0 + 1.5 * u(rng) * a + 1.5 * u(rng) * b);
+    const CutPolygon outer = CutPolygon::on_plane_of(inner, grown);
+    const engine::Aabb box = outer.box_beyond(inner);
+    if (box.empty()) ++empty;
+    const double tolerance = 1e-9 * outer.diameter();
+    // Points of the outer polygon: on its fan's triangles, its corners and edges.
+    const std::vector<Vec3>& c = outer.corners();
+    for (int k = 0; k < 400; ++k) {
+      const std::size_t i = 1 + static_cast<std::size_t>(w(rng) * static_cast<double>(c.size() - 2)) % (c.size() - 2);
+      double s = w(rng), t = w(rng);
+      if (s + t > 1) s = 1 - s, t = 1 - t;
+      if (k % 4 == 0) t = 0;  // on an edge from the first corner
+      const Vec3 x = c[0] + s * (c[i] - c[0]) + t * (c[i + 1] - c[0]);
+      if (inner.distance_outside(x) <= 1e-6 * outer.diameter()) continue;  // covered, up to rounding
+      ++outside;
+      for (int d = 0; d < 3; ++d) {
+        ASSERT_GE(x[d], box.lo[d] - tolerance) << round;
+        ASSERT_LE(x[d], box.hi[d] + tolerance) << round;
+      }
+    }
+  }
+  EXPECT_GT(outside, 10000u);
+  EXPECT_GT(empty, 20u);  // the rounds that did not grow, and some whose points fell inside
+
+  // A rectangle grown at its front: the box spans the growth across the
+  // front, not the edges the two share; either orientation.
+  const CutPolygon before = CutPolygon::from_points({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+  for (bool reversed : {false, true}) {
+    std::vector<Vec3> corners{{0, 0, 0}, {1.1, 0, 0}, {1.1, 1, 0}, {0, 1, 0}};
+    if (reversed) std::reverse(corners.begin(), corners.end());
+    const engine::Aabb front = CutPolygon::on_plane_of(before, corners).box_beyond(before);
+    EXPECT_NEAR(front.lo.x(), 1.0, 1e-12);
+    EXPECT_NEAR(front.hi.x(), 1.1, 1e-12);
+    EXPECT_NEAR(front.lo.y(), 0.0, 1e-12);
+    EXPECT_NEAR(front.hi.y(), 1.0, 1e-12);
+  }
+  EXPECT_TRUE(before.box_beyond(before).empty());
+}
+
 }  // namespace
 }  // namespace mtcut::cut
