@@ -91,8 +91,8 @@ struct MtCutDef {
   // (candidates()), when nothing but that cut has edited the MT since and
   // every tet this cut may change is among them (a part's front after its
   // commit: a tet the outline passes through lies where the polygon grew
-  // or in the commit's `search`, so the commit found it, and the tets it
-  // made are its record's). The dead and those off the search box are passed over.
+  // or in the commit's `search`, so the commit found it, or its record
+  // holds it; and the tets the commit made are its record's). The dead and those off the search box are passed over.
   // Read while the cut is searched.
   const std::vector<TetId>* candidates = nullptr;
   // Step 3 (UpdateProcessFragment): the fragments the cut separates are
