@@ -241,6 +241,7 @@ engine::Aabb CutPolygon::box_beyond(const CutPolygon& inner) const {
   for (std::size_t i = 0; i < m; ++i) twice += cross2d(in[i], in[(i + 1) % m]);
   if (twice < 0) std::reverse(in.begin(), in.end());  // counter-clockwise in this frame
   engine::Aabb box;
+  const auto extend = [&](const Eigen::Vector2d& q) { box.extend(origin_ + q.x() * axis_u_ + q.y() * axis_v_); };
   std::vector<double> d(n);  // (n) each corner's distance inside the edge's line, times its length
   for (std::size_t k = 0; k < m; ++k) {
     const Eigen::Vector2d& a = in[k];
@@ -248,7 +249,6 @@ engine::Aabb CutPolygon::box_beyond(const CutPolygon& inner) const {
     double beyond = 0;
     for (std::size_t i = 0; i < n; ++i) beyond = std::min(beyond, d[i] = cross2d(e, corners2d_[i] - a));
     if (beyond >= -1e-9 * diameter_ * e.norm()) continue;
-    const auto extend = [&](const Eigen::Vector2d& q) { box.extend(origin_ + q.x() * axis_u_ + q.y() * axis_v_); };
     for (std::size_t i = 0; i < n; ++i) {
       const std::size_t j = (i + 1) % n;
       if (d[i] <= 0) extend(corners2d_[i]);

@@ -92,8 +92,9 @@ struct MtCutDef {
   // every tet this cut may change is among them (a part's front after its
   // commit: a tet the outline passes through lies where the polygon grew
   // or in the commit's `search`, so the commit found it, or its record
-  // holds it; and the tets the commit made are its record's). The dead and those off the search box are passed over.
-  // Read while the cut is searched.
+  // holds it; and the tets the commit made are its record's). The dead and
+  // those off the search box are passed over. Read while the cut is
+  // searched.
   const std::vector<TetId>* candidates = nullptr;
   // Step 3 (UpdateProcessFragment): the fragments the cut separates are
   // decomposed. Off for a provisional cut, which the next frame takes back

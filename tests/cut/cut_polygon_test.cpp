@@ -230,8 +230,9 @@ TEST(CutPolygon, OnPlaneOfKeepsThePlaneBitForBit) {
 }
 
 // box_beyond holds every point of a grown polygon that its former one
-// does not cover (beyond rounding), and no more than where it grew: a part grown at its
-// front only gives a box no wider than the growth across the front.
+// does not cover (beyond rounding), and no more than where it grew: a part
+// grown at its front only gives a box no wider than the growth across the
+// front.
 TEST(CutPolygon, BoxBeyondHoldsWhatTheFormerPolygonDoesNotCover) {
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> u(-1.0, 1.0), w(0.0, 1.0);
