@@ -167,9 +167,11 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
 
 std::optional<CutPolygon> TimeCriticalCutter::on_part_plane(const Part& part, const CutPolygon& polygon) const {
   const CutPolygon& plane = part.record->plane();
-  if (polygon.same_plane(plane)) return polygon;
   // The part's polygon only grows: what a frame committed stays inside it
-  // however the next frame's map to rest space moves the outline.
+  // however the next frame's map to rest space moves the outline, and a
+  // polygon already of the plane (a frame whose sweep was not mapped) may
+  // cover less than the last one too.
+  if (polygon.same_plane(plane) && part.last.box_beyond(polygon).empty()) return polygon;
   std::vector<Vec3> corners = part.last.corners();
   corners.insert(corners.end(), polygon.corners().begin(), polygon.corners().end());
   try {

@@ -312,8 +312,8 @@ class TimeCriticalCutter {
   // the crossing's reach.
   static CutPolygon past(const CutPolygon& polygon, const Crossing& crossing);
   // `polygon` on the part's plane, as the hull of it and the part's last
-  // polygon when it is not of that plane already (nullopt when it has no
-  // area there).
+  // polygon unless it is of that plane already and covers the last one
+  // (nullopt when it has no area there).
   std::optional<CutPolygon> on_part_plane(const Part& part, const CutPolygon& polygon) const;
   // What a cut changed since it started, to take it back: the MT's fragment
   // count and the index when it started, and every change it made.

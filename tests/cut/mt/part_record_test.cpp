@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "cut/mt/fragment_ledger.h"
 #include "cut/mt/mt_pieces.h"
@@ -363,6 +365,54 @@ TEST(PartRecord, ACommitTakenBackLeavesTheRecordAsBefore) {
   EXPECT_EQ(record.front()->hi, front_before->hi);
   for (TetId t : commit.made_tets) EXPECT_FALSE(record.owns(t));
   for (const cut::MadeVertex& m : commit.made_vertices) EXPECT_FALSE(record.made(m.id));
+}
+
+// A part's polygon only grows (TimeCriticalCutter::on_part_plane): a
+// frame whose polygon lies on the part's plane but covers less than the
+// last one (in the World, a sweep not carried to rest space after frames
+// that were) keeps what the last one covered, so the part ends as the one
+// cut of its largest polygon. Each frame's MT, index, frontier and cutter
+// are valid (a part that shrank left whole the tets beside its committed
+// pieces that only its first frame's outline crossed).
+TEST(PartRecord, APolygonOfThePartsPlaneCoveringLessKeepsWhatTheLastOneCovered) {
+  for (const std::string name : {"ellipsoid", "box"}) {
+    const Mt& original = cut_test_mt(name);
+    const engine::Aabb box = mt_box(original);
+    const Vec3 size = box.hi - box.lo;
+    const cut::CutPolygon wide = half_across(box);  // its leading edge inside the tissue
+    std::vector<Vec3> corners = wide.corners();
+    for (Vec3& x : corners) x.x() = std::min(x.x(), box.center().x() - 0.2 * size.x());
+    const cut::CutPolygon narrow = cut::CutPolygon::on_plane_of(wide, corners);
+    ASSERT_TRUE(narrow.same_plane(wide));
+    const auto stroke = [&](const std::vector<cut::CutPolygon>& frames) {
+      Mt mt = original;
+      engine::TetBvh bvh(mt);
+      Frontier frontier = Frontier::coarsest(mt);
+      cut::TimeCriticalCutter cutter;
+      for (std::size_t k = 0; k <= frames.size(); ++k) {
+        const std::optional<cut::CutPolygon> current =
+            k < frames.size() ? std::optional<cut::CutPolygon>(frames[k]) : std::nullopt;
+        if (const auto taken = cutter.recut(mt, bvh, {}, {}, current, current.has_value()))
+          cut::follow_retraction(mt, frontier, *taken);
+        const cut::TimeCriticalCutter::RunResult run = cutter.run(mt, bvh, frontier, cut::CutBudget::unlimited());
+        cut::follow_cut(mt, frontier, run.changes);
+        EXPECT_FALSE(run.refused.has_value()) << name << " frame " << k;
+        for (const auto& report : {mt.validate(), bvh.validate(mt), engine::validate_frontier(mt, frontier),
+                                   cutter.validate(mt)})
+          EXPECT_TRUE(report.ok()) << name << " frame " << k << ": " << report.summary();
+      }
+      EXPECT_EQ(cutter.part_record(), nullptr) << name;
+      return mt;
+    };
+    const Mt once = stroke({wide});
+    const Mt shrunk = stroke({wide, narrow});
+    // The hull of the two polygons is the wide one, its corners projected
+    // again: the same cut, up to the rounding of the points its outline
+    // makes.
+    ASSERT_LT(stroke({narrow}).num_live_tets(), once.num_live_tets()) << name << ": the narrow polygon cuts as much";
+    EXPECT_EQ(shrunk.num_live_tets(), once.num_live_tets()) << name << ": the part lost what its first frame covered";
+    EXPECT_EQ(cut::find_pieces(shrunk).count, cut::find_pieces(once).count) << name;
+  }
 }
 
 }  // namespace
