@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <span>
 #include <string>
 #include <vector>
@@ -165,7 +166,8 @@ const FragmentLedger* ledger_checked(const PartRecord* part) {
 
 engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
                                    std::size_t first_cut_vertex, std::size_t first_new_vertex, const PartRecord* part,
-                                   CutSelect select, const FrameCommit* commit, const MtChangeReport* kept) {
+                                   CutSelect select, const FrameCommit* commit, const MtChangeReport* kept,
+                                   const FragmentLedger* taken) {
   engine::ValidationReport report;
   const auto earlier = [&](VertId v) {
     return v.index() >= first_cut_vertex && v.index() < first_new_vertex && !(part && part->made(v));
@@ -242,12 +244,27 @@ engine::ValidationReport check_cut(const Mt& mt, const engine::TetBvh& bvh, cons
   const std::vector<FragId> decomposed = decomposed_fragments(cut);
   const FragmentLedger* owed = ledger_checked(part);
   if (select != CutSelect::kComplete && owed) {
-    MtChangeReport whole;
-    if (kept) {
-      whole = *kept;
-      whole.append(cut);
-    }
-    for (FragId f : owed->unbalanced_with(mt, kept ? whole : cut, decomposed))
+    // The ledger (with the commit) and the whole front: zero on every face.
+    const auto with_whole_front = [&] {
+      MtChangeReport whole;
+      if (kept) {
+        whole = *kept;
+        whole.append(cut);
+      }
+      return owed->unbalanced_with(mt, kept ? whole : cut, decomposed);
+    };
+    // Before the frame that sum was zero, so it is zero now exactly when
+    // what the frame added to it is: its commit, the splits it took back
+    // (`taken`) and this cut.
+    const auto by_the_frame = [&] {
+      MtChangeReport frame;
+      if (commit) frame = *commit->changes;
+      frame.append(cut);
+      return taken->unbalanced_with(mt, frame, decomposed);
+    };
+    const std::vector<FragId> out_of_balance = taken ? by_the_frame() : with_whole_front();
+    assert(!taken || out_of_balance == with_whole_front());
+    for (FragId f : out_of_balance)
       report.add("cut: fragment " + std::to_string(f.value) +
                  ": its tets do not fill the region of the tets it replaces");
   }

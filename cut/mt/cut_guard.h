@@ -82,11 +82,16 @@ const FragmentLedger* ledger_checked(const PartRecord* part);
 // Their edges are not checked again on their own: a tet around one that
 // changed since is a piece of this cut or of `commit` with that edge, and
 // such a piece checks an edge it shares with a kept piece of an earlier
-// cut's piece as that piece's own check did. Empty when the cut may be
-// kept.
+// cut's piece as that piece's own check did. `taken`: the part's front
+// and its ledger balanced before the frame (the last front's check
+// passed), `commit` decomposed no fragment, and `taken` holds, negated,
+// the chain of the splits the frame took back of that front
+// (FragmentLedger::subtract): the balance is then the same sum taken by
+// what the frame changed, its commit, `taken` and the cut, not by the
+// whole front with the ledger. Empty when the cut may be kept.
 engine::ValidationReport check_cut(const engine::Mt& mt, const engine::TetBvh& bvh, const MtChangeReport& cut,
                                    std::size_t first_cut_vertex, std::size_t first_new_vertex,
                                    const PartRecord* part, CutSelect select, const FrameCommit* commit = nullptr,
-                                   const MtChangeReport* kept = nullptr);
+                                   const MtChangeReport* kept = nullptr, const FragmentLedger* taken = nullptr);
 
 }  // namespace mtcut::cut

@@ -150,6 +150,21 @@ void FragmentLedger::enter_whole(const Mt& mt, std::span<const FragId> fragments
   drop_zeros(sums_);
 }
 
+void FragmentLedger::subtract(const Mt& mt, const MtChangeReport& changes, std::span<const std::uint8_t> which) {
+  assert(which.size() == changes.replaced.size());
+  for (std::size_t k = 0; k < changes.replaced.size(); ++k) {
+    if (!which[k]) continue;
+    const TetReplacement& r = changes.replaced[k];
+    const std::array<std::pair<FragId, int>, 2> sides{{{r.birth, 1}, {r.death, -1}}};
+    add_faces(sums_, mt, mt.tet(r.old), mt.boundary_mask(r.old), sides, 1, {});
+    for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {
+      const TetId t = changes.made_tets[i];
+      add_faces(sums_, mt, mt.tet(t), mt.boundary_mask(t), sides, -1, {});
+    }
+  }
+  drop_zeros(sums_);
+}
+
 std::vector<FragId> FragmentLedger::unbalanced_with(const Mt& mt, const MtChangeReport& cut,
                                                     std::span<const FragId> skip) const {
   Sums sums;

@@ -63,6 +63,12 @@ class FragmentLedger {
   // (each balanced before the part; PartRecord::meet_old_crack).
   void enter_whole(const Mt& mt, std::span<const FragId> fragments, const MtChangeReport* held);
 
+  // Takes out what the replacements of `changes` flagged in `which` (one
+  // flag per replacement) changed in their fragments: their chain, as add()
+  // sums it, negated. A part's front split again takes its splits out so
+  // (TimeCriticalCutter::keep_front).
+  void subtract(const Mt& mt, const MtChangeReport& changes, std::span<const std::uint8_t> which);
+
   // The fragments (not the root, the drain or in `skip`, which is sorted)
   // that stay out of balance once `cut` is added, sorted. With an empty
   // ledger: those whose two tessellations `cut` changed unequally.

@@ -115,6 +115,7 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
       record = part_->record;
       part_.reset();
       frame_.reset();  // the end takes every tet the part's frames left
+      balanced_.reset();
     } else if (pivot_) {
       polygon = pivoted(*pivot_, ended[i].corners());
     } else {
@@ -141,6 +142,7 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     }
     part_.reset();
     frame_.reset();
+    balanced_.reset();
     pivot_.reset();
     crossing_.reset();
     return out;
@@ -363,9 +365,21 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     // crack, checked when they were made, but where the fragments' balance
     // is checked (cut_guard.h) the whole front pays what the commits owe.
     const bool with_kept = a.select == CutSelect::kFront && kept_ && kept_->record == a.record;
+    // A front whose part balanced before the frame is checked by what the
+    // frame changed, unless the frame's commit decomposed fragments (the
+    // ledger entered them by what their tets sum to).
+    std::optional<FragmentLedger> taken;
+    if (a.select == CutSelect::kFront && balanced_ && balanced_->record == a.record)
+      taken = std::exchange(balanced_->taken, std::nullopt);
+    if (!with_commit || !commit.changes->fragment_splits.empty()) taken.reset();
     const engine::ValidationReport guard =
         check_cut(mt, bvh, a.tx.changes, first_cut_vertex_, a.tx.first_new_vertex, a.record.get(), a.select,
-                  with_commit ? &commit : nullptr, with_kept ? &kept_->changes : nullptr);
+                  with_commit ? &commit : nullptr, with_kept ? &kept_->changes : nullptr, taken ? &*taken : nullptr);
+    if (a.select == CutSelect::kFront) {
+      balanced_.reset();
+      if (guard.ok() && a.record && a.record->met_old_crack() && ledger_checked(a.record.get()))
+        balanced_ = Balanced{a.record};
+    }
     if (!guard.ok()) {
       result.refused = retract_cut(mt, bvh, a.tx.changes, a.tx.fragments_before, &*a.tx.bvh_mark);
       result.refused_reported_vertices = a.tx.changes.made_vertices.size() - call.made_vertices.size();

@@ -367,6 +367,18 @@ class TimeCriticalCutter {
     MtChangeReport changes;
   };
   std::optional<Kept> kept_;
+  // The part whose front balances its ledger (cut_guard.h: what its
+  // commits owe plus its whole front's chain is zero on every face): its
+  // last front's check passed, against the ledger, and since then only a
+  // frame's keep_front took splits of that front back, their chain held
+  // negated in `taken` until the frame's front is checked. That check then
+  // sums what the frame changed, not the whole front with the ledger
+  // (check_cut's `taken`).
+  struct Balanced {
+    std::shared_ptr<PartRecord> record;
+    std::optional<FragmentLedger> taken{};
+  };
+  std::optional<Balanced> balanced_;
   // A provisional cut is queued, in progress or held (not counting kept_).
   bool provisional_pending() const { return provisional_queued_ || held_ || (active_ && active_->provisional); }
   // The part's front under its grown `polygon` (recut): the splits it

@@ -11,6 +11,7 @@
 namespace mtcut::cut {
 
 std::optional<CutRetraction> TimeCriticalCutter::retract(Mt& mt, TetBvh& bvh) {
+  balanced_.reset();  // the front goes whole, or was not checked
   if (provisional_queued_) {
     queue_.pop_back();
     provisional_queued_ = false;
@@ -81,6 +82,12 @@ std::optional<CutRetraction> TimeCriticalCutter::keep_front(Mt& mt, TetBvh& bvh,
   std::vector<std::uint8_t> take =
       kept_front_splits(mt, tx.changes, polygon, record, def_.cut.snap, reach, &workspace_.classifier);
   for (std::uint8_t& t : take) t = !t;
+  if (balanced_ && balanced_->record == part_->record) {
+    balanced_->taken.emplace();
+    balanced_->taken->subtract(mt, tx.changes, take);
+  } else {
+    balanced_.reset();
+  }
   CutRetraction out = retract_replacements(mt, bvh, tx.changes, take);
   out.unused = record.hold(mt, tx.changes);
   // The front's tets no commit owns and the record does not hold are the
@@ -97,6 +104,7 @@ std::optional<CutRetraction> TimeCriticalCutter::keep_front(Mt& mt, TetBvh& bvh,
 
 void TimeCriticalCutter::take_back_frame(Mt& mt, TetBvh& bvh, const std::shared_ptr<PartRecord>& record,
                                          CutSelect select, RunResult& result) {
+  balanced_.reset();
   // A refused commit leaves its front queued behind it, to be split against it.
   if (select == CutSelect::kComplete && !queue_.empty() && queue_.front().record == record &&
       queue_.front().select == CutSelect::kFront) {
