@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "engine/tet_geometry.h"
+#include "sim/spring_law.h"
 
 namespace mtcut::sim {
 void add_volume_forces(const SpringModel& model, const SpringState& state, std::vector<Vec3>& f) {
@@ -47,7 +48,7 @@ void compute_forces(const SpringModel& model, const Environment& env, const Spri
       if (length <= 0) continue;
       const Vec3 dir = d / length;
       const double magnitude =
-          model.stiffness[s] * (length - model.rest_length[s]) + model.damping[s] * dir.dot(v[b] - va);
+          spring_tension(model.stiffness[s], model.rest_length[s], model.damping[s], length, dir.dot(v[b] - va));
       fa += magnitude * dir;
       f[b] -= magnitude * dir;
     }

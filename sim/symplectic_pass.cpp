@@ -5,6 +5,7 @@
 
 #include "sim/contacts.h"
 #include "sim/forces.h"
+#include "sim/spring_law.h"
 
 namespace mtcut::sim {
 namespace {
@@ -63,19 +64,17 @@ MTCUT_SPRING_LOOP void pass(const SpringModel& model, const RunLanes& lanes, con
       const Lanes4 u23e = __builtin_shuffle(u2, u3, even), u23o = __builtin_shuffle(u2, u3, odd);
       const Lanes4 ux = __builtin_shuffle(u01e, u23e, low), uy = __builtin_shuffle(u01o, u23o, low),
                    uz = __builtin_shuffle(u01e, u23e, high);
-      // Hooke + dashpot along d, as one multiple of d: k (l - L) / l
-      // + c (d . dv) / l^2 = k + (c (d . dv) - k L l) / l^2. In this form
-      // the square root and the division both take l^2 and run side by side
-      // (1 / sqrt(l^2) chains them). + kTinyLength2 is exact for any real
-      // spring; a zero-length one (and a pad) adds 0 (d = 0) instead of
-      // dividing by 0.
+      // The spring law as one multiple of d (spring_coefficient).
+      // + kTinyLength2 is exact for any real spring; a zero-length one (and
+      // a pad) adds 0 (d = 0) instead of dividing by 0.
       const Lanes4 length2 = dx * dx + dy * dy + dz * dz + tiny;
       Lanes4 length;
       for (int l = 0; l < 4; ++l) length[l] = std::sqrt(length2[l]);  // one vsqrtpd (-fno-math-errno)
       const Lanes4 inv_length2 = one / length2;
       const SpringQuad& q = quads[k];
-      const Lanes4 coef =
-          q.stiffness + (q.damping * (dx * ux + dy * uy + dz * uz) - q.stiffness_rest * length) * inv_length2;
+      Lanes4 coef;
+      spring_coefficient(q.stiffness, q.stiffness_rest, q.damping, dx * ux + dy * uy + dz * uz, length, inv_length2,
+                         coef);
       fx += coef * dx;
       fy += coef * dy;
       fz += coef * dz;
@@ -97,7 +96,8 @@ MTCUT_SPRING_LOOP void pass(const SpringModel& model, const RunLanes& lanes, con
       const Lanes2 dot = Lanes2{products[0], products[1]} + Lanes2{products[2], products[3]};
       const Lanes2 inv_length2 = Lanes2{1.0, 1.0} / length2, length = sqrt_lanes(length2);
       const SpringPair& sp = pairs[p];
-      const Lanes2 coef = sp.stiffness + (sp.damping * dot - sp.stiffness_rest * length) * inv_length2;
+      Lanes2 coef;
+      spring_coefficient(sp.stiffness, sp.stiffness_rest, sp.damping, dot, length, inv_length2, coef);
       const Lanes4 g0 = coef[0] * d0, g1 = coef[1] * d1;
       fi += g0 + g1;
       acc[j[0]].p -= g0;

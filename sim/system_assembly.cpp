@@ -7,15 +7,16 @@
 #include <algorithm>
 
 #include "sim/lanes2.h"
+#include "sim/spring_law.h"
 
 namespace mtcut::sim {
 namespace {
 
 // A pair of springs' geometry at the state, for the assembly's second step.
 struct PairGeometry {
-  Lanes2 nx, ny, nz;           // unit direction a -> c
-  Lanes2 along, across, root;  // the block's terms, sqrt(along)
-  Lanes2 stretch;              // h k (l - L)
+  Lanes2 nx, ny, nz;               // unit direction a -> c
+  Lanes2 along, across, root;      // the block's terms, sqrt(along)
+  Lanes2 stiffness, rest, length;  // h k, L, l
 };
 
 void add_block(Sym3& d, const SpringBlock& blk) {
@@ -51,12 +52,12 @@ void SpringSystem::assemble(const SpringModel& model, const SpringState& state, 
 }
 
 // b = h (f0 + h K v0), K v0 = -sum_s J_s (v_a - v_b), J_s = k (n n^T + t (I - n n^T)).
-// Spring s adds g_s to b_a and -g_s to b_b: its force (Hooke + dashpot, as
-// compute_forces) times h, minus h^2 J_s (v_a - v_b). A x0 = M' x0 + the
-// sum over the springs of B_s (x0_a - x0_b) at a and its opposite at b, so
-// r = b - A x0 takes g_s - B_s (x0_a - x0_b) where b takes g_s (a masked
-// spring's block included: x0 is 0 at its fixed end, so that is its share
-// of the free end's own block times x0).
+// Spring s adds g_s to b_a and -g_s to b_b: its force (sim/spring_law.h)
+// times h, minus h^2 J_s (v_a - v_b). A x0 = M' x0 + the sum over the
+// springs of B_s (x0_a - x0_b) at a and its opposite at b, so r = b - A x0
+// takes g_s - B_s (x0_a - x0_b) where b takes g_s (a masked spring's block
+// included: x0 is 0 at its fixed end, so that is its share of the free
+// end's own block times x0).
 MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const SpringState& state,
                                               const std::vector<Vec3>& f, double h, const std::vector<Vec3>& dv0,
                                               std::vector<Vec3>& r) {
@@ -139,7 +140,7 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
         g.nx = dx * inv_length, g.ny = dy * inv_length, g.nz = dz * inv_length;
         g.along = h * Lanes2{damping[s0], on * damping[s1]} + h2 * k_s * (one - t);
         g.across = h2 * k_s * t;
-        g.stretch = h * k_s * (length2 * inv_length - rest);  // h k (l - L), l = |d|^2 / |d|
+        g.stiffness = h * k_s, g.rest = rest, g.length = length2 * inv_length;  // l = |d|^2 / |d|
         g.root = sqrt_lanes(g.along);
       }
       for (std::int32_t k = first; k < last; ++k) {
@@ -151,8 +152,10 @@ MTCUT_SPRING_LOOP void SpringSystem::assemble(const SpringModel& model, const Sp
         const Lanes2 ux = va.x() - Lanes2{v0.x(), v1.x()}, uy = va.y() - Lanes2{v0.y(), v1.y()},
                      uz = va.z() - Lanes2{v0.z(), v1.z()};
         const Lanes2 dn = nx * ux + ny * uy + nz * uz;
-        // g_s = h f_a = h (k (l - L) - c n . dv0) n, minus h^2 J_s dv0.
-        const Lanes2 coef = g.stretch - along * dn;
+        // g_s = h f_a - h^2 J_s u, u = v_a - v_c: along n, the spring law at
+        // h k, with J's n n^T part h^2 k (1 - t) folded into the dashpot's
+        // h c (along), at n . (v_c - v_a) = -dn; across u, the rest of J.
+        const Lanes2 coef = spring_tension(g.stiffness, g.rest, along, g.length, -dn);
         const Lanes2 gx = coef * nx - across * ux, gy = coef * ny - across * uy, gz = coef * nz - across * uz;
         bx += gx;
         by += gy;
