@@ -377,7 +377,7 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
                   with_commit ? &commit : nullptr, with_kept ? &kept_->changes : nullptr, taken ? &*taken : nullptr);
     if (a.select == CutSelect::kFront) {
       balanced_.reset();
-      if (guard.ok() && a.record && a.record->met_old_crack() && ledger_checked(a.record.get()))
+      if (guard.ok() && a.provisional && a.record && a.record->met_old_crack() && ledger_checked(a.record.get()))
         balanced_ = Balanced{a.record};
     }
     if (!guard.ok()) {
@@ -498,6 +498,7 @@ std::optional<engine::Mt::Compaction> TimeCriticalCutter::reclaim(Mt& mt, TetBvh
   if (part_) part_->record->renumber(out);
   crack_.renumber(out);
   searched_.reset();
+  if (balanced_) balanced_->taken.reset();  // keyed by the old ids: the frame's front sums it all again
   const auto renumber = [&](Transaction& tx) {
     tx.changes.renumber(out);
     std::size_t kept_before = 0;  // vertices kept below the cut's first

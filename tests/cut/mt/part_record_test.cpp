@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -384,7 +386,10 @@ TEST(PartRecord, APolygonOfThePartsPlaneCoveringLessKeepsWhatTheLastOneCovered) 
     for (Vec3& x : corners) x.x() = std::min(x.x(), box.center().x() - 0.2 * size.x());
     const cut::CutPolygon narrow = cut::CutPolygon::on_plane_of(wide, corners);
     ASSERT_TRUE(narrow.same_plane(wide));
-    const auto stroke = [&](const std::vector<cut::CutPolygon>& frames) {
+    // `frames` then the stroke's end: as a part that ended with the
+    // polygon `ending` (a turn or the blade out), or none (the stroke ended).
+    const auto stroke = [&](const std::vector<cut::CutPolygon>& frames,
+                            const std::optional<cut::CutPolygon>& ending = std::nullopt) {
       Mt mt = original;
       engine::TetBvh bvh(mt);
       Frontier frontier = Frontier::coarsest(mt);
@@ -392,7 +397,11 @@ TEST(PartRecord, APolygonOfThePartsPlaneCoveringLessKeepsWhatTheLastOneCovered) 
       for (std::size_t k = 0; k <= frames.size(); ++k) {
         const std::optional<cut::CutPolygon> current =
             k < frames.size() ? std::optional<cut::CutPolygon>(frames[k]) : std::nullopt;
-        if (const auto taken = cutter.recut(mt, bvh, {}, {}, current, current.has_value()))
+        const std::uint8_t turned_back = 0;
+        const bool ends = !current && ending;
+        if (const auto taken = cutter.recut(mt, bvh, ends ? std::span(&*ending, 1) : std::span<const cut::CutPolygon>(),
+                                            ends ? std::span(&turned_back, 1) : std::span<const std::uint8_t>(),
+                                            current, current.has_value()))
           cut::follow_retraction(mt, frontier, *taken);
         const cut::TimeCriticalCutter::RunResult run = cutter.run(mt, bvh, frontier, cut::CutBudget::unlimited());
         cut::follow_cut(mt, frontier, run.changes);
@@ -412,6 +421,10 @@ TEST(PartRecord, APolygonOfThePartsPlaneCoveringLessKeepsWhatTheLastOneCovered) 
     ASSERT_LT(stroke({narrow}).num_live_tets(), once.num_live_tets()) << name << ": the narrow polygon cuts as much";
     EXPECT_EQ(shrunk.num_live_tets(), once.num_live_tets()) << name << ": the part lost what its first frame covered";
     EXPECT_EQ(cut::find_pieces(shrunk).count, cut::find_pieces(once).count) << name;
+    // The part's end given the narrow polygon keeps the wide one's too.
+    const Mt ended_narrow = stroke({wide}, narrow);
+    EXPECT_EQ(ended_narrow.num_live_tets(), once.num_live_tets()) << name << ": the part's end lost what it covered";
+    EXPECT_EQ(cut::find_pieces(ended_narrow).count, cut::find_pieces(once).count) << name;
   }
 }
 
