@@ -126,6 +126,7 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
       own_workspace_(workspace ? nullptr : std::make_unique<MtCutWorkspace>()),
       workspace_(workspace ? workspace : own_workspace_.get()) {
   const auto start = Clock::now();
+  const std::span<const Vec3> given = geometry;
   const bool deformed = !geometry.empty();
   if (!deformed) geometry = mt.positions();
   if (geometry.size() != mt.num_vertices())
@@ -290,7 +291,35 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   std::vector<std::int32_t>& pending_of = workspace_->pending_of;
   if (pending_of.size() < mt.num_tets()) pending_of.resize(mt.num_tets(), -1);
   for (std::size_t i = 0; i < pending_.size(); ++i) pending_of[pending_[i].tet.index()] = static_cast<std::int32_t>(i);
+  if (def.check_search && (def.search || def.grown_from || def.candidates)) check_search(mt, bvh, given, table);
   find_seconds_ = seconds_since(start);
+}
+
+void MtCut::check_search(const Mt& mt, const TetBvh& bvh, std::span<const Vec3> geometry, SplitTable& table) const {
+  MtCutDef whole = def_;
+  whole.search = nullptr;
+  whole.grown_from = nullptr;
+  whole.candidates = nullptr;
+  whole.check_search = false;
+  const MtCut reference(mt, bvh, polygon_, geometry, whole, table);
+  // (tet, 1 + configuration of a split or 0 for a relabel), sorted.
+  const auto changes = [](const MtCut& cut) {
+    std::vector<std::pair<std::int32_t, std::uint64_t>> out;
+    out.reserve(cut.pending_.size());
+    for (const Pending& p : cut.pending_) out.emplace_back(p.tet.value, p.split ? 1 + std::uint64_t{p.config} : 0);
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const auto narrowed = changes(*this), walked = changes(reference);
+  if (narrowed == walked) return;
+  std::vector<std::pair<std::int32_t, std::uint64_t>> missed, extra;
+  std::set_difference(walked.begin(), walked.end(), narrowed.begin(), narrowed.end(), std::back_inserter(missed));
+  std::set_difference(narrowed.begin(), narrowed.end(), walked.begin(), walked.end(), std::back_inserter(extra));
+  const auto first = [](const auto& v) { return v.empty() ? std::string("none") : "tet " + std::to_string(v.front().first); };
+  throw std::logic_error("MtCut: the narrowed search changes " + std::to_string(narrowed.size()) +
+                         " tets, a walk of the whole polygon " + std::to_string(walked.size()) + " (" +
+                         std::to_string(missed.size()) + " missed, first " + first(missed) + "; " +
+                         std::to_string(extra.size()) + " otherwise, first " + first(extra) + ")");
 }
 
 MtCut::~MtCut() {

@@ -102,6 +102,12 @@ struct MtCutDef {
   // good, and a decomposition would cost the guard a check of each part
   // whole (cut_guard.h) every frame.
   bool decompose = true;
+  // A narrowed search (`search`, `grown_from` or `candidates`) is checked
+  // against a walk of the whole polygon: the cut must change the same tets
+  // the same way (split by the same configuration, or relabelled), else the
+  // constructor throws std::logic_error. It searches and classifies twice;
+  // the tests of strokes turn it on.
+  bool check_search = false;
 };
 
 // One cut in progress. Not copyable: it holds its workspace (its own, or one
@@ -172,6 +178,9 @@ class MtCut {
   };
   // Step 1, after the polygon's box: the tets around every vertex the
   // candidates put on the cut, as candidates too, round after round.
+  // MtCutDef::check_search: this cut against the one of the same polygon
+  // with no narrowed search.
+  void check_search(const Mt& mt, const TetBvh& bvh, std::span<const Vec3> geometry, SplitTable& table) const;
   static void add_tets_around_on_vertices(const Mt& mt, const TetBvh& bvh, CutClassifier& classifier,
                                           const PartRecord* record, std::vector<TetId>& found);
   // The cut passes through v and splits it (it separates some tets from

@@ -55,7 +55,7 @@ PartRun cut_part(const Mt& original, const Path& path, int steps, const std::str
   engine::TetBvh bvh(mt);
   Frontier frontier = Frontier::coarsest(mt);
   cut::StrokeSweep stroke;
-  cut::TimeCriticalCutter cutter;
+  cut::TimeCriticalCutter cutter(checked_cutter());
   for (int k = 0; k <= steps + 1 && out.valid; ++k) {
     cut::BladePose pose = path(std::min(1.0, static_cast<double>(k) / steps));
     pose.engaged = k <= steps;
@@ -138,7 +138,7 @@ HeldFront held_front_taken_back(const Mt& original, const Path& path, int steps,
   engine::TetBvh bvh(mt);
   Frontier frontier = Frontier::coarsest(mt);
   cut::StrokeSweep stroke;
-  cut::TimeCriticalCutter cutter;
+  cut::TimeCriticalCutter cutter(checked_cutter());
   for (int k = 0; k <= steps + 1; ++k) {
     cut::BladePose pose = path(std::min(1.0, static_cast<double>(k) / steps));
     pose.engaged = k <= steps;
@@ -393,7 +393,7 @@ TEST(PartRecord, APolygonOfThePartsPlaneCoveringLessKeepsWhatTheLastOneCovered) 
       Mt mt = original;
       engine::TetBvh bvh(mt);
       Frontier frontier = Frontier::coarsest(mt);
-      cut::TimeCriticalCutter cutter;
+      cut::TimeCriticalCutter cutter(checked_cutter());
       for (std::size_t k = 0; k <= frames.size(); ++k) {
         const std::optional<cut::CutPolygon> current =
             k < frames.size() ? std::optional<cut::CutPolygon>(frames[k]) : std::nullopt;

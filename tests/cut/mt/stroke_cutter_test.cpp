@@ -42,7 +42,7 @@ StrokeOutcome cut_progressively(const Mt& original, const Path& path, int steps,
   engine::TetBvh bvh(mt);
   Frontier frontier = Frontier::coarsest(mt);
   cut::StrokeSweep stroke;
-  cut::TimeCriticalCutter cutter;
+  cut::TimeCriticalCutter cutter(checked_cutter());
   const bool limited = budget.work != cut::CutBudget::unlimited().work || std::isfinite(budget.milliseconds);
   for (int k = 0; (k <= steps + 1 || cutter.frozen()) && out.valid; ++k) {
     const std::string at = where + " step " + std::to_string(k);
@@ -137,7 +137,7 @@ TEST(StrokeCutter, APartsEndCutsWhatItsLastFrameAdds) {
       engine::TetBvh bvh(mt);
       Frontier frontier = Frontier::coarsest(mt);
       cut::StrokeSweep stroke;
-      cut::TimeCriticalCutter cutter;
+      cut::TimeCriticalCutter cutter(checked_cutter());
       for (int k = 0; k <= kSteps - kLast; ++k) {
         const cut::BladePose pose = path(static_cast<double>(k) / kSteps);
         cut::cut_stroke_step(stroke, cutter, mt, bvh, frontier, std::span(&pose, 1));
@@ -206,7 +206,7 @@ TEST(StrokeCutter, APartCutWholeIsCutAgainOnlyOnceItsPolygonMoves) {
     engine::TetBvh bvh(mt);
     Frontier frontier = Frontier::coarsest(mt);
     cut::StrokeSweep stroke;
-    cut::TimeCriticalCutter cutter;
+    cut::TimeCriticalCutter cutter(checked_cutter());
     constexpr int kSteps = 1000;
     std::size_t kept = 0, redone = 0;
     for (int k = 0; k <= kSteps + 1; ++k) {
