@@ -123,13 +123,7 @@ MeshCutResult cut_once(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
       key.side = -1;
       key.ids[0] = v.value;
       const VertId original = v;
-      v = factory.get(key, [&] {
-        PointSource s;
-        s.position = mesh.positions[original.index()];
-        s.parents[0] = original;
-        s.weights[0] = 1;
-        return s;
-      });
+      v = factory.get(key, [&] { return MadeVertex::at_vertex(original, mesh.positions[original.index()]); });
     }
     result.relabeled_tets.push_back(TetId(t));
   };
@@ -174,7 +168,7 @@ MeshCutResult cut_once(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
   // Vertices the cut went through: their stars must not be pinched.
   std::vector<VertId> through;
   for (VertId v : cls.on_vertices()) through.push_back(v);
-  for (const NewVertex& v : result.new_vertices)
+  for (const MadeVertex& v : result.new_vertices)
     if (v.key.kind == PointKind::kVertexCopy) through.push_back(v.id);
   for (std::size_t t = n_tets; t < mesh.num_tets(); ++t) nearby.push_back(static_cast<std::uint32_t>(t));
   stats.unpinched_vertices = unpinch_vertices(mesh, through, nearby, result.new_vertices, result.relabeled_tets);
@@ -186,7 +180,7 @@ MeshCutResult cut_once(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
   stats.new_vertices = result.new_vertices.size();
   stats.split_vertices = static_cast<std::size_t>(std::count_if(
       result.new_vertices.begin(), result.new_vertices.end(),
-      [](const NewVertex& v) { return v.key.kind == PointKind::kVertexCopy; }));
+      [](const MadeVertex& v) { return v.key.kind == PointKind::kVertexCopy; }));
   for (std::size_t i = 0; i < result.split_tets.size(); ++i) {
     double worst = 180;
     for (std::uint32_t j = result.split_first[i]; j < result.split_first[i + 1]; ++j) {
@@ -257,13 +251,13 @@ std::vector<VertId> find_torn_edges(const TetMesh& mesh, const MeshCutResult& r,
         // A copy made by this cut stands for the vertex it copies.
         VertId original = v;
         if (v.index() >= first_new) {
-          const NewVertex& nv = r.new_vertices[v.index() - first_new];
+          const MadeVertex& nv = r.new_vertices[v.index() - first_new];
           if (nv.key.kind != PointKind::kVertexCopy) continue;
           original = VertId(nv.key.ids[0]);
           while (original.index() >= first_new) original = VertId(r.new_vertices[original.index() - first_new].key.ids[0]);
         }
         if (std::find(r.snapped_vertices.begin(), r.snapped_vertices.end(), original) != r.snapped_vertices.end() ||
-            std::any_of(r.new_vertices.begin(), r.new_vertices.end(), [&](const NewVertex& nv) {
+            std::any_of(r.new_vertices.begin(), r.new_vertices.end(), [&](const MadeVertex& nv) {
               return nv.key.kind == PointKind::kVertexCopy && nv.key.ids[0] == original.value;
             }))
           out.push_back(original);

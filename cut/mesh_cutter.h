@@ -60,7 +60,7 @@ struct MeshCutResult {
   std::vector<std::uint32_t> split_first;  // (n_split + 1) offsets into `replacements`
   std::vector<TetId> replacements;         // the tets replacing them; the old id comes first
   std::vector<TetId> relabeled_tets;       // tets given a vertex copy (may repeat)
-  std::vector<NewVertex> new_vertices;     // in id order, from the old vertex count on
+  std::vector<MadeVertex> new_vertices;    // in id order, from the old vertex count on
   std::vector<VertId> snapped_vertices;    // vertices the cut was moved onto (and split)
   std::vector<VertId> resided_vertices;    // on the plane to rounding, kept off the cut on their neighbours' side
 };

@@ -26,8 +26,8 @@ std::array<VertId, 3> sorted_face(const Tet& tet, int f) {
   return face;
 }
 
-PointSource from_face(const std::array<VertId, 3>& face, const CutClassifier::FacePoint& p) {
-  PointSource s;
+MadeVertex from_face(const std::array<VertId, 3>& face, const CutClassifier::FacePoint& p) {
+  MadeVertex s;
   s.position = p.position;
   for (int i = 0; i < 3; ++i) {
     s.parents[i] = face[i];
@@ -74,10 +74,10 @@ PointKey point_key(const Tet& tet, Label label) {
   return key;
 }
 
-PointSource edge_point_source(const Tet& tet, int edge, double t, std::span<const Vec3> positions) {
+MadeVertex edge_point_source(const Tet& tet, int edge, double t, std::span<const Vec3> positions) {
   const VertId lo = std::min(tet[kTetEdges[edge][0]], tet[kTetEdges[edge][1]]);
   const VertId hi = std::max(tet[kTetEdges[edge][0]], tet[kTetEdges[edge][1]]);
-  PointSource s;
+  MadeVertex s;
   const Vec3& plo = positions[lo.index()];
   s.position = plo + t * (positions[hi.index()] - plo);
   s.parents[0] = lo;
@@ -87,16 +87,13 @@ PointSource edge_point_source(const Tet& tet, int edge, double t, std::span<cons
   return s;
 }
 
-PointSource point_source(const Tet& tet, Label label, const CutClassifier& classifier, const SplitRecipe& recipe) {
+MadeVertex point_source(const Tet& tet, Label label, const CutClassifier& classifier, const SplitRecipe& recipe) {
   const auto positions = classifier.positions();
   const int i = label_index(label);
-  PointSource s;
+  MadeVertex s;
   switch (label_kind(label)) {
     case LabelKind::kVertex:
-      s.position = positions[tet[i].index()];
-      s.parents[0] = tet[i];
-      s.weights[0] = 1;
-      return s;
+      return MadeVertex::at_vertex(tet[i], positions[tet[i].index()]);
     case LabelKind::kEdge:
       return edge_point_source(tet, i, classifier.crossing_parameter(tet[kTetEdges[i][0]], tet[kTetEdges[i][1]]),
                                positions);
@@ -113,7 +110,7 @@ PointSource point_source(const Tet& tet, Label label, const CutClassifier& class
       if (recipe.centre_of.empty()) throw std::logic_error("point_source: a centre without a cut surface");
       const double w = 1.0 / static_cast<double>(recipe.centre_of.size());
       for (Label l : recipe.centre_of) {
-        const PointSource p = point_source(tet, l, classifier, recipe);
+        const MadeVertex p = point_source(tet, l, classifier, recipe);
         s.position += w * p.position;
         for (int j = 0; j < 4; ++j)
           for (int k = 0; k < 4; ++k)

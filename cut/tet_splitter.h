@@ -22,11 +22,12 @@ namespace mtcut::cut {
 
 // The key of the point `label` of `tet` (global ids, sorted).
 PointKey point_key(const Tet& tet, Label label);
-// Where that point is. `recipe` is used for the 1:17 centre only.
-PointSource point_source(const Tet& tet, Label label, const CutClassifier& classifier, const SplitRecipe& recipe);
+// Where that point is: a MadeVertex's position, parents and weights (its id,
+// key and rest are the numbering's). `recipe` is used for the 1:17 centre only.
+MadeVertex point_source(const Tet& tet, Label label, const CutClassifier& classifier, const SplitRecipe& recipe);
 // point_source of the point on local edge `edge` of `tet` at parameter t
 // from its lower id (the classifier's crossing_parameter).
-PointSource edge_point_source(const Tet& tet, int edge, double t, std::span<const Vec3> positions);
+MadeVertex edge_point_source(const Tet& tet, int edge, double t, std::span<const Vec3> positions);
 
 // The split of one tet, resolved to vertex ids by `factory`; the tets are
 // appended to `out`. `config` must be classifier.configure(tet) and cut. Returns the case.

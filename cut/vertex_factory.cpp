@@ -9,7 +9,7 @@ void VertexFactory::apply(engine::TetMesh& mesh) const {
     throw std::logic_error("VertexFactory::apply: the mesh has " + std::to_string(mesh.positions.size()) +
                            " vertices, the factory started at " + std::to_string(first_));
   mesh.positions.reserve(first_ + made_.size());
-  for (const NewVertex& v : made_) mesh.positions.push_back(v.source.position);
+  for (const MadeVertex& v : made_) mesh.positions.push_back(v.position);
 }
 
 }  // namespace mtcut::cut

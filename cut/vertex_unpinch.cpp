@@ -100,7 +100,7 @@ PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& cls, con
 }
 
 std::size_t unpinch_vertices(engine::TetMesh& mesh, std::span<const VertId> candidates,
-                             const std::vector<std::uint32_t>& nearby, std::vector<NewVertex>& made,
+                             const std::vector<std::uint32_t>& nearby, std::vector<MadeVertex>& made,
                              std::vector<engine::TetId>& changed) {
   const std::size_t first_made = made.empty() ? mesh.num_vertices() : made.front().id.index();
   std::vector<std::int32_t> slot(mesh.num_vertices(), -1);
@@ -144,17 +144,12 @@ std::size_t unpinch_vertices(engine::TetMesh& mesh, std::span<const VertId> cand
       if (root == keep) continue;
       auto [it, fresh] = copy_of.emplace(root, VertId());
       if (fresh) {
-        NewVertex copy;
+        const bool of_made = v.index() >= first_made && v.index() - first_made < made.size();
+        MadeVertex copy = of_made ? made[v.index() - first_made]  // a copy of a new vertex: its parents
+                                  : MadeVertex::at_vertex(v, mesh.positions[v.index()]);
         copy.id = VertId(mesh.num_vertices());
-        copy.key.kind = PointKind::kVertexCopy;
-        copy.key.ids = {v.value, static_cast<std::int32_t>(copy_of.size()), -1, -1};
-        if (v.index() >= first_made && v.index() - first_made < made.size()) {
-          copy.source = made[v.index() - first_made].source;  // a copy of a new vertex
-        } else {
-          copy.source.position = mesh.positions[v.index()];
-          copy.source.parents[0] = v;
-          copy.source.weights[0] = 1;
-        }
+        copy.key = PointKey{PointKind::kVertexCopy, 0, {v.value, static_cast<std::int32_t>(copy_of.size()), -1, -1}};
+        copy.rest = copy.position;
         mesh.positions.push_back(mesh.positions[v.index()]);
         made.push_back(copy);
         it->second = copy.id;

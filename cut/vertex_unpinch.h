@@ -43,7 +43,7 @@ PinchFix find_pinches(const engine::TetMesh& mesh, const CutClassifier& classifi
 // this cut copies its record); tets given a copy are appended to `changed`.
 // Returns the number of copies.
 std::size_t unpinch_vertices(engine::TetMesh& mesh, std::span<const VertId> candidates,
-                             const std::vector<std::uint32_t>& nearby, std::vector<NewVertex>& made,
+                             const std::vector<std::uint32_t>& nearby, std::vector<MadeVertex>& made,
                              std::vector<engine::TetId>& changed);
 
 }  // namespace mtcut::cut

@@ -1,6 +1,7 @@
 #include "sim/state_transfer.h"
 
 #include <algorithm>
+#include <cassert>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -90,20 +91,33 @@ TetId simulated_holder(const engine::Mt& mt, const DeformationSnapshot& snap, Te
   return TetId();
 }
 
+// The record of v among the made vertices (ascending ids), nullptr if a cut did not make v.
+const cut::MadeVertex* find_made(std::span<const cut::MadeVertex> made, VertId v) {
+  const auto it = std::lower_bound(made.begin(), made.end(), v,
+                                   [](const cut::MadeVertex& m, VertId id) { return m.id < id; });
+  return it != made.end() && it->id == v ? &*it : nullptr;
+}
+
+bool ascending_ids(std::span<const cut::MadeVertex> made) {
+  return std::adjacent_find(made.begin(), made.end(), [](const cut::MadeVertex& a, const cut::MadeVertex& b) {
+           return !(a.id < b.id);
+         }) == made.end();
+}
+
 Sample sample(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snap, VertId v,
-              const OriginLookup& origins, Source& source, int depth, TetId around = TetId()) {
+              std::span<const cut::MadeVertex> made, Source& source, int depth, TetId around = TetId()) {
   Sample out;
   if (v.index() < snap.particle_of.size() && snap.particle_of[v.index()] >= 0) {
     source = Source::kKept;
     out.set_particle(snap, static_cast<std::size_t>(snap.particle_of[v.index()]));
     return out;
   }
-  if (origins && depth < 64) {
-    if (const auto origin = origins(v)) {
+  if (!made.empty() && depth < 64) {
+    if (const cut::MadeVertex* origin = find_made(made, v)) {
       Source ignored;
       for (int k = 0; k < 4; ++k) {
         if (!origin->parents[k].valid()) continue;
-        out.add_sample(sample(mt, bvh, snap, origin->parents[k], origins, ignored, depth + 1), origin->weights[k],
+        out.add_sample(sample(mt, bvh, snap, origin->parents[k], made, ignored, depth + 1), origin->weights[k],
                        snap.carried.size());
       }
       source = Source::kCut;
@@ -173,20 +187,23 @@ DeformationSnapshot take_snapshot(const engine::Mt& mt, std::span<const engine::
 }
 
 std::pair<Vec3, Vec3> sample_vertex(const engine::Mt& mt, const engine::TetBvh& bvh,
-                                    const DeformationSnapshot& snapshot, VertId v, const OriginLookup& origins) {
+                                    const DeformationSnapshot& snapshot, VertId v,
+                                    std::span<const cut::MadeVertex> made) {
+  assert(ascending_ids(made));
   Source ignored;
-  const Sample s = sample(mt, bvh, snapshot, v, origins, ignored, 0);
+  const Sample s = sample(mt, bvh, snapshot, v, made, ignored, 0);
   return {s.x, s.v};
 }
 
 SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
-                           const SpringModel& model, const OriginLookup& origins, TransferReport* report,
+                           const SpringModel& model, std::span<const cut::MadeVertex> made, TransferReport* report,
                            std::vector<std::vector<Vec3>>* carried, std::span<const engine::TetId> model_tets) {
   if (snapshot.carried.size() > DeformationSnapshot::kMaxCarried)
     throw std::invalid_argument("transfer_state: more carried vectors than DeformationSnapshot::kMaxCarried");
   for (const auto& field : snapshot.carried)
     if (field.size() != snapshot.x.size())
       throw std::invalid_argument("transfer_state: a carried vector's size is not the snapshot's particle count");
+  if (!ascending_ids(made)) throw std::invalid_argument("transfer_state: the made vertices' ids are not ascending");
   TransferReport local;
   SpringState state;
   const std::size_t n = model.num_particles();
@@ -205,7 +222,7 @@ SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, cons
   };
   const bool some_to_find =
       !model_tets.empty() && std::any_of(model.particle_vertex.begin(), model.particle_vertex.end(),
-                                         [&](VertId u) { return !simulated(u) && !(origins && origins(u)); });
+                                         [&](VertId u) { return !simulated(u) && !find_made(made, u); });
   std::vector<TetId> around;
   if (some_to_find) {
     around.resize(mt.num_vertices());
@@ -227,7 +244,7 @@ SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, cons
       if (carried)
         for (std::size_t c = 0; c < carried->size(); ++c) (*carried)[c][p] = snapshot.carried[c][q];
     } else {
-      const Sample s = sample(mt, bvh, snapshot, u, origins, source, 0, around.empty() ? TetId() : around[u.index()]);
+      const Sample s = sample(mt, bvh, snapshot, u, made, source, 0, around.empty() ? TetId() : around[u.index()]);
       state.x[p] = s.x;
       state.v[p] = s.v;
       if (carried)

@@ -9,7 +9,10 @@
 //  - a vertex that was simulated keeps its own state;
 //  - a vertex made by a cut is an affine combination of parent vertices
 //    (two for an edge point, three for a face point): it gets the same
-//    combination of their states (parents sampled recursively);
+//    combination of their states (parents sampled recursively). The cut's
+//    made vertices come as the cutter reports them (cut/made_vertex.h), a
+//    span in ascending id order, looked up by binary search: the report is
+//    already sorted, and a vertex is looked up once per new particle;
 //  - any other vertex (one that a refinement brings back, or a hidden one)
 //    gets the barycentric interpolation, in rest space, of the corners of the
 //    old simulated tet that contains its rest position (TetBvh over all MT
@@ -20,12 +23,11 @@
 // the change equal to the momentum before it, to round-off.
 
 #include <array>
-#include <functional>
-#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
 
+#include "cut/made_vertex.h"
 #include "engine/mt/frontier.h"
 #include "engine/mt/index_set.h"
 #include "engine/mt/mt.h"
@@ -34,15 +36,6 @@
 #include "sim/spring_state.h"
 
 namespace mtcut::sim {
-
-// Where a cut vertex came from: rest position = sum weights[i] * rest(parents[i])
-// over the valid parents (the cutter's record of each vertex it makes).
-struct VertexOrigin {
-  std::array<VertId, 4> parents{};
-  std::array<double, 4> weights{};
-};
-// Looks up the origin of a vertex made by a cut (nullopt for any other vertex).
-using OriginLookup = std::function<std::optional<VertexOrigin>(VertId)>;
 
 struct DeformationSnapshot {
   // The simulated tets, over the MT's tets when taken: a lookup per
@@ -72,11 +65,12 @@ DeformationSnapshot take_snapshot(const engine::Mt& mt, std::span<const engine::
 // Deformed position and velocity of any MT vertex under the snapshot. `bvh`
 // indexes the MT's live tets, which must still include the snapshot's tets
 // (true across a frontier change; across a cut, new vertices come through
-// `origins`). A vertex outside every snapshot tet (the builder may move the
-// boundary) follows the nearest simulated particle rigidly.
+// `made`: the cut's made vertices, ascending ids). A vertex outside every
+// snapshot tet (the builder may move the boundary) follows the nearest
+// simulated particle rigidly.
 std::pair<Vec3, Vec3> sample_vertex(const engine::Mt& mt, const engine::TetBvh& bvh,
                                     const DeformationSnapshot& snapshot, VertId v,
-                                    const OriginLookup& origins = {});
+                                    std::span<const cut::MadeVertex> made = {});
 
 struct TransferReport {
   std::size_t kept = 0;          // particles that existed before
@@ -88,9 +82,11 @@ struct TransferReport {
 };
 
 // The state of `model` (the new one) from the snapshot; `carried` (when
-// given) gets the snapshot's carried vectors for the new particles. Throws
-// std::invalid_argument when the snapshot carries more than kMaxCarried
-// vectors or one of the wrong size.
+// given) gets the snapshot's carried vectors for the new particles; `made`:
+// the vertices a cut made since the snapshot, ascending ids (empty across a
+// frontier change). Throws std::invalid_argument when the snapshot carries
+// more than kMaxCarried vectors or one of the wrong size, or when `made` is
+// not in ascending id order.
 //
 // `model_tets` (optional): the tets the model was built on. A new vertex of
 // a frontier move is then found in an old tet through the MT's DAG, from a
@@ -101,7 +97,7 @@ struct TransferReport {
 // boxes (~40 us a vertex; 517 new vertices took 19 ms after a cut in the
 // stress scenario). Without it, or when the walk finds none, the BVH.
 SpringState transfer_state(const engine::Mt& mt, const engine::TetBvh& bvh, const DeformationSnapshot& snapshot,
-                           const SpringModel& model, const OriginLookup& origins = {},
+                           const SpringModel& model, std::span<const cut::MadeVertex> made = {},
                            TransferReport* report = nullptr, std::vector<std::vector<Vec3>>* carried = nullptr,
                            std::span<const engine::TetId> model_tets = {});
 

@@ -6,7 +6,6 @@
 #include <iterator>
 #include <optional>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "absl/container/flat_hash_map.h"
 #include "cut/cut_polygon.h"
@@ -27,22 +26,10 @@ double ms_since(Clock::time_point start) {
 
 }  // namespace
 
-// The parents of the vertices the cutter made, by vertex id.
-struct OriginIndex {
-  std::unordered_map<std::int32_t, VertexOrigin> by_vertex;
-  OriginLookup lookup() const {
-    return [this](VertId v) -> std::optional<VertexOrigin> {
-      const auto it = by_vertex.find(v.value);
-      if (it == by_vertex.end()) return std::nullopt;
-      return it->second;
-    };
-  }
-};
-
 struct World::CutSprings {
   ModelBuild springs;
-  DeformationSnapshot snapshot;  // before the cut
-  OriginIndex origins;           // of the vertices it made
+  DeformationSnapshot snapshot;        // before the cut
+  std::vector<cut::MadeVertex> made;   // the vertices it made, ascending ids
 };
 
 World::~World() {
@@ -84,13 +71,13 @@ Environment World::environment_for(const ScalpelPose& pose) const {
 // iterations 3.0 -> 1.6 on average). The stepper's history is always that
 // of the current model (it is resized at each step and carried at each
 // rebuild); the explicit integrator has none worth carrying.
-void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, const OriginIndex* origins,
+void World::adopt_model(SpringModel model, DeformationSnapshot snapshot, std::span<const cut::MadeVertex> made,
                         FrameMetrics& m) {
   model_ = std::move(model);
   ++m.springs_built;
   if (def_.integrator.kind == IntegratorKind::kImplicitEuler) snapshot.carried = stepper_.take_warm_start_history();
   std::vector<std::vector<Vec3>> carried;
-  state_ = transfer_state(mt_, bvh_, snapshot, model_, origins ? origins->lookup() : OriginLookup{}, nullptr,
+  state_ = transfer_state(mt_, bvh_, snapshot, model_, made, nullptr,
                           &carried, frontier_.tets());
   stepper_.carry_warm_start(std::move(carried));
 }
@@ -119,7 +106,7 @@ void World::take_lod_move(FrameMetrics& m) {
   std::swap(frontier_, lod_move_->frontier);
   lod_target_ = std::move(lod_move_->frontier);  // the old frontier's storage, for the next copy
   lod_move_.reset();
-  adopt_model(std::move(model), std::move(snapshot), nullptr, m);
+  adopt_model(std::move(model), std::move(snapshot), {}, m);
 }
 
 void World::take_cut_springs(FrameMetrics& m) {
@@ -127,7 +114,7 @@ void World::take_cut_springs(FrameMetrics& m) {
   const std::unique_ptr<CutSprings> cut = std::move(cut_springs_);
   // Taken before the snapshot moves: the build reads it until it ends.
   SpringModel model = cut->springs.take();
-  adopt_model(std::move(model), std::move(cut->snapshot), &cut->origins, m);
+  adopt_model(std::move(model), std::move(cut->snapshot), cut->made, m);
 }
 
 void World::reclaim_cut_storage(FrameMetrics& m) {
@@ -251,16 +238,17 @@ void World::run_cut_stage(std::span<const ScalpelPose> poses, FrameMetrics& m) {
   const bool mesh_changed =
       tets.size() != snapshot.simulated_tets.size() || !std::all_of(tets.begin(), tets.end(), was_simulated);
   if (mesh_changed) {
-    OriginIndex origins;
-    for (const auto& made : result.changes.made_vertices) {
-      const auto again = provisional_points.find(made.key);
+    // A point made again where a retraction left a simulated one takes that
+    // one's state: its only parent.
+    std::vector<cut::MadeVertex> made = std::move(result.changes.made_vertices);
+    for (cut::MadeVertex& v : made) {
+      const auto again = provisional_points.find(v.key);
       if (again != provisional_points.end() && snapshot.particle_of[again->second.index()] >= 0) {
-        origins.by_vertex[made.id.value] = VertexOrigin{{again->second}, {1.0}};
-      } else {
-        origins.by_vertex[made.id.value] = VertexOrigin{made.source.parents, made.source.weights};
+        v.parents = {again->second, VertId(), VertId(), VertId()};
+        v.weights = {1.0, 0.0, 0.0, 0.0};
       }
     }
-    cut_springs_ = std::make_unique<CutSprings>(CutSprings{ModelBuild(), std::move(snapshot), std::move(origins)});
+    cut_springs_ = std::make_unique<CutSprings>(CutSprings{ModelBuild(), std::move(snapshot), std::move(made)});
     const DeformationSnapshot& before = cut_springs_->snapshot;
     cut_springs_->springs = start_model_build(frontier_, before.simulated_tets.members(),
                                               [&before](engine::TetId t) { return before.simulated(t); });

@@ -50,6 +50,7 @@
 #include <span>
 #include <vector>
 
+#include "cut/made_vertex.h"
 #include "cut/mt/time_critical_cutter.h"
 #include "cut/stroke_sweep.h"
 #include "engine/mt/frontier.h"
@@ -147,7 +148,7 @@ class World {
   engine::ErrorField error_field(const ScalpelPose& pose) const;
   // Makes `model` (built on frontier_) the simulated one, the state carried from `snapshot`;
   // counts it in m.springs_built.
-  void adopt_model(SpringModel model, struct DeformationSnapshot snapshot, const struct OriginIndex* origins,
+  void adopt_model(SpringModel model, struct DeformationSnapshot snapshot, std::span<const cut::MadeVertex> made,
                    FrameMetrics& m);
   // Starts building springs on `frontier` (in the background unless def.lod
   // says inline): updating model_, which is on the tets `model_tets`

@@ -44,7 +44,7 @@ void MtChangeReport::renumber(const engine::Mt::Compaction& compaction) {
   for (TetId& t : made_tets) t = compaction.tet(t);
   for (MadeVertex& m : made_vertices) {
     m.id = compaction.vertex(m.id);
-    for (VertId& parent : m.source.parents)
+    for (VertId& parent : m.parents)
       if (parent.valid()) parent = compaction.vertex(parent);
     // Keys name vertices by id (sorted; the renumbering keeps their order).
     for (std::int32_t& id : m.key.ids)

@@ -1,7 +1,7 @@
 #pragma once
 // What cutting the MT changed, as data (STYLE.md 2: no callbacks into higher
-// layers). The simulator reads it to carry masses and positions over
-// (sim/state_transfer.h's VertexOrigin is MadeVertex's parents / weights),
+// layers). The simulator reads `made_vertices` (cut/made_vertex.h) to carry
+// the particles' state over (sim/state_transfer.h),
 // the World reads `fragment_splits` to map its frontier (frontier_mapping.h),
 // and the bench reads the counts and times.
 //
@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "cut/vertex_factory.h"
+#include "cut/made_vertex.h"
 #include "engine/ids.h"
 #include "engine/mt/mt.h"
 #include "engine/tet_mesh.h"
@@ -35,16 +35,6 @@ struct TetReplacement {
   // relabel): a part's front keeps a split whose configuration the grown
   // polygon leaves as it was (TimeCriticalCutter::recut).
   std::uint32_t config = 0;
-};
-
-// A vertex the cut made. rest = sum weights[i] * rest(parents[i]); the
-// deformed position is source.position (the cut is computed on deformed
-// positions when the World gives them, DESIGN.md "Which geometry is cut").
-struct MadeVertex {
-  VertId id;
-  PointKey key;          // what it is: edge point (edge, side), face point, vertex copy
-  PointSource source;    // parents (<= 4, unused = none), weights, deformed position
-  Vec3 rest;             // its rest position, stored in the MT
 };
 
 // A fragment the cut separated: `parts[0]` is `old` itself (it keeps its id
@@ -74,7 +64,10 @@ struct MtCutCounts {
 struct MtChangeReport {
   std::vector<TetReplacement> replaced;   // (n_replaced) in processing order
   std::vector<TetId> made_tets;           // pieces, grouped by `replaced`
-  std::vector<MadeVertex> made_vertices;  // ascending ids
+  // Ascending ids; rest = sum weights[i] * rest(parents[i]) is stored in
+  // the MT, position is where the cut put it (deformed when the World gives
+  // a geometry, DESIGN.md "Which geometry is cut").
+  std::vector<MadeVertex> made_vertices;
   std::vector<FragmentSplit> fragment_splits;
   std::vector<FragId> processed;          // fragments whose job ran, in order (ids before the split)
   MtCutCounts counts;

@@ -34,14 +34,6 @@ PointKey copy_key(VertId v) {
   return key;
 }
 
-PointSource copy_source(VertId v, std::span<const Vec3> geometry) {
-  PointSource source;
-  source.position = geometry[v.index()];
-  source.parents[0] = v;
-  source.weights[0] = 1;
-  return source;
-}
-
 // Sorts ids and drops repeats in O(n + range / 64): marks them in `bits`
 // (all 0 before and after) and reads them back in order. A cut through the
 // whole object finds thousands of tets; std::sort's comparisons cost ten
@@ -378,7 +370,7 @@ std::size_t MtCut::job_cost(const Mt& mt, std::size_t job) const {
 template <class Source>
 VertId MtCut::point_id(const PointKey& key, Source&& source) {
   const auto [it, inserted] = point_index_.try_emplace(key, static_cast<std::int32_t>(points_.size()));
-  if (inserted) points_.push_back({key, source()});
+  if (inserted) points_.emplace_back(source()).key = key;
   return VertId(static_cast<std::int32_t>(first_vertex_) + it->second);
 }
 
@@ -391,7 +383,7 @@ VertId MtCut::edge_point_id(std::int32_t edge, const Tet& tet, Label label, Sour
   std::int32_t& index = edge_point_[slot];
   if (index < 0) {
     index = static_cast<std::int32_t>(points_.size());
-    points_.push_back({point_key(tet, label), source()});
+    points_.emplace_back(source()).key = point_key(tet, label);
   }
   return VertId(static_cast<std::int32_t>(first_vertex_) + index);
 }
@@ -416,7 +408,7 @@ void MtCut::number_points_by_key() {
   for (std::size_t i = 0; i < n; ++i) order.push_back(pack(points_[i].key, i));
   std::vector<Packed> scratch;
   engine::radix_sort<3>(order, scratch, [](const Packed& p) { return std::array{p.kind_side, p.ids01, p.ids23}; });
-  // points_ stays in scan order (a point is ~100 bytes): add_vertices
+  // points_ stays in scan order (a point is ~120 bytes): add_vertices
   // reads it in key order through point_order_.
   std::vector<std::int32_t> rank(n);
   point_order_.resize(n);
@@ -473,7 +465,8 @@ void MtCut::resolve_relabel(Pending& p, const Tet& tet, const CutClassifier& cla
   for (VertId& v : moved)
     if (splits(v)) {
       const VertId committed = def_.record ? def_.record->point(copy_key(v)) : VertId();
-      v = committed.valid() ? committed : point_id(copy_key(v), [&] { return copy_source(v, classifier.positions()); });
+      const auto copy = [&] { return MadeVertex::at_vertex(v, classifier.positions()[v.index()]); };
+      v = committed.valid() ? committed : point_id(copy_key(v), copy);
     }
   for (int f = 0; f < 4; ++f) {
     const auto& fv = kTetFaces[f];
@@ -496,12 +489,9 @@ void MtCut::add_vertices(Mt& mt, MtChangeReport& report) {
   engine::reserve_geometric(report.made_tets, report.made_tets.size() + new_tets_ + pending_.size());
   engine::reserve_geometric(report.replaced, report.replaced.size() + pending_.size());
   for (const std::int32_t index : point_order_) {
-    const auto& [key, source] = points_[static_cast<std::size_t>(index)];
-    Vec3 rest = Vec3::Zero();
-    for (int i = 0; i < 4; ++i)
-      if (source.parents[i].valid()) rest += source.weights[i] * mt.position(source.parents[i]);
-    const VertId id = mt.add_vertex(rest);
-    report.made_vertices.push_back({id, key, source, rest});
+    MadeVertex& made = report.made_vertices.emplace_back(points_[static_cast<std::size_t>(index)]);
+    made.rest = made.blend([&](VertId parent) { return mt.position(parent); });
+    made.id = mt.add_vertex(made.rest);
   }
   report.counts.new_vertices += points_.size();
   vertices_added_ = true;

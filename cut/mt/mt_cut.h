@@ -172,10 +172,6 @@ class MtCut {
     bool done = false;
     const SplitRecipe* recipe = nullptr; // split tets: the pieces' faces
   };
-  struct NewPoint {
-    PointKey key;
-    PointSource source;
-  };
   // Step 1, after the polygon's box: the tets around every vertex the
   // candidates put on the cut, as candidates too, round after round.
   // MtCutDef::check_search: this cut against the one of the same polygon
@@ -188,8 +184,9 @@ class MtCut {
   bool splits(VertId v) const { return workspace_->separating[v.index()] != 0; }
   void change_tet(Mt& mt, TetBvh& bvh, Pending& p, MtChangeReport& report);
   void add_vertices(Mt& mt, MtChangeReport& report);
-  // The vertex of `key`, numbered (and its source recorded by `source()`)
-  // when the cut first meets it; number_points_by_key() renumbers.
+  // The vertex of `key`, numbered (its position and parents recorded from
+  // `source()`, a MadeVertex) when the cut first meets it;
+  // number_points_by_key() renumbers.
   template <class Source>
   VertId point_id(const PointKey& key, Source&& source);
   // The vertex of a point on straddling edge number `edge` (the
@@ -217,7 +214,7 @@ class MtCut {
   std::unique_ptr<MtCutWorkspace> own_workspace_;  // when none was given
   MtCutWorkspace* workspace_;
   std::size_t first_vertex_ = 0;  // id of the first new vertex (the MT's vertex count at start)
-  std::vector<NewPoint> points_;  // new points, in the order the scan met them
+  std::vector<MadeVertex> points_;  // new points, in the order the scan met them (ids and rest unset)
   std::vector<std::int32_t> point_order_;  // indices in points_ in id (key) order
   absl::flat_hash_map<PointKey, std::int32_t, PointKeyHash> point_index_;  // key -> index in points_
   // Points on straddling edges (most of them), index in points_ by 3 x the

@@ -223,10 +223,7 @@ void TimeCriticalCutter::extend_geometry(std::span<const MadeVertex> made) {
     if (q.geometry.empty()) continue;
     for (const MadeVertex& m : made) {
       if (m.id.index() < q.geometry.size()) continue;
-      Vec3 p = Vec3::Zero();
-      for (int i = 0; i < 4; ++i)
-        if (m.source.parents[i].valid()) p += m.source.weights[i] * q.geometry[m.source.parents[i].index()];
-      q.geometry.push_back(p);
+      q.geometry.push_back(m.blend([&](VertId parent) { return q.geometry[parent.index()]; }));
     }
   }
 }

@@ -200,15 +200,15 @@ TEST(MeshCutter, ReportsWhatChanged) {
   for (std::size_t i = 0; i < r.split_tets.size(); ++i) EXPECT_EQ(r.replacements[r.split_first[i]], r.split_tets[i]);
   // New vertices: ids in order, positions from their parents and weights.
   for (std::size_t i = 0; i < r.new_vertices.size(); ++i) {
-    const NewVertex& v = r.new_vertices[i];
+    const MadeVertex& v = r.new_vertices[i];
     EXPECT_EQ(v.id.index(), vertices + i);
     Vec3 p = Vec3::Zero();
     double w = 0;
     for (int k = 0; k < 4; ++k)
-      if (v.source.parents[k].valid()) {
-        EXPECT_LT(v.source.parents[k].index(), vertices);
-        p += v.source.weights[k] * mesh.positions[v.source.parents[k].index()];
-        w += v.source.weights[k];
+      if (v.parents[k].valid()) {
+        EXPECT_LT(v.parents[k].index(), vertices);
+        p += v.weights[k] * mesh.positions[v.parents[k].index()];
+        w += v.weights[k];
       }
     EXPECT_NEAR(w, 1.0, 1e-12);
     EXPECT_LT((p - mesh.positions[v.id.index()]).norm(), 1e-12 * (hi - lo).norm());

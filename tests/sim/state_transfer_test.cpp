@@ -158,18 +158,18 @@ TEST(StateTransfer, CutVerticesComeFromTheirParents) {
   const engine::TetBvh bvh(mt);
   const VertId a = mt.tet(frontier.tets()[0])[0], b = mt.tet(frontier.tets()[0])[1];
   const VertId made = mt.add_vertex(0.75 * mt.position(a) + 0.25 * mt.position(b));
-  const OriginLookup origins = [&](VertId v) -> std::optional<VertexOrigin> {
-    if (v == made) return VertexOrigin{{a, b, VertId(), VertId()}, {0.75, 0.25, 0, 0}};
-    return std::nullopt;
-  };
-  const auto [x, v] = sample_vertex(mt, bvh, snap, made, origins);
+  cut::MadeVertex record;
+  record.id = made;
+  record.parents = {a, b, VertId(), VertId()};
+  record.weights = {0.75, 0.25, 0, 0};
+  const auto [x, v] = sample_vertex(mt, bvh, snap, made, std::span<const cut::MadeVertex>(&record, 1));
   const Vec3 xa = state.x[static_cast<std::size_t>(snap.particle_of[a.index()])];
   const Vec3 xb = state.x[static_cast<std::size_t>(snap.particle_of[b.index()])];
   EXPECT_LT((x - (0.75 * xa + 0.25 * xb)).norm(), 1e-15);
   EXPECT_EQ(v, Vec3::Zero());
 }
 
-TEST(StateTransfer, CarriedVectorsOfTheWrongCountOrSizeAreRefused) {
+TEST(StateTransfer, CarriedVectorsOfTheWrongShapeAndMadeVerticesOutOfOrderAreRefused) {
   engine::MeshLoadDef load;
   load.builtin_tets = 300;
   const engine::TetMesh fine = engine::load_mesh("builtin:box", load).mesh;
@@ -184,6 +184,13 @@ TEST(StateTransfer, CarriedVectorsOfTheWrongCountOrSizeAreRefused) {
   EXPECT_THROW(transfer_state(mt, bvh, snap, model), std::invalid_argument);
   snap.carried = {snap.v};
   EXPECT_NO_THROW(transfer_state(mt, bvh, snap, model));
+  // The made vertices are looked up by id: they must come in ascending order.
+  std::vector<cut::MadeVertex> made(2);
+  made[0].id = VertId(static_cast<std::int32_t>(mt.num_vertices()) + 1);
+  made[1].id = VertId(static_cast<std::int32_t>(mt.num_vertices()));
+  EXPECT_THROW(transfer_state(mt, bvh, snap, model, made), std::invalid_argument);
+  std::swap(made[0], made[1]);
+  EXPECT_NO_THROW(transfer_state(mt, bvh, snap, model, made));
 }
 
 }  // namespace

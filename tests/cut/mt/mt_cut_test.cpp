@@ -85,7 +85,7 @@ void run_sequence(const std::string& name, int cuts, std::uint64_t seed) {
     for (const auto& m : r.made_vertices) {
       Vec3 rest = Vec3::Zero();
       for (int k = 0; k < 4; ++k)
-        if (m.source.parents[k].valid()) rest += m.source.weights[k] * mt.position(m.source.parents[k]);
+        if (m.parents[k].valid()) rest += m.weights[k] * mt.position(m.parents[k]);
       EXPECT_EQ(rest, mt.position(m.id));
     }
     const Frontier rebuilt = cut::map_frontier(mt, followed, r.fragment_splits);
@@ -288,7 +288,7 @@ TEST(MtCut, DeformedGeometryCutsWhereTheDeformedTissueIs) {
   ASSERT_EQ(r1.made_vertices.size(), r2.made_vertices.size());
   for (std::size_t i = 0; i < r1.made_vertices.size(); ++i) {
     EXPECT_LT((r1.made_vertices[i].rest - r2.made_vertices[i].rest).norm(), 1e-12);
-    EXPECT_LT((r2.made_vertices[i].source.position - r2.made_vertices[i].rest - shift).norm(), 1e-12);
+    EXPECT_LT((r2.made_vertices[i].position - r2.made_vertices[i].rest - shift).norm(), 1e-12);
   }
 }
 
