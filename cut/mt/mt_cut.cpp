@@ -307,7 +307,9 @@ void MtCut::check_search(const Mt& mt, const TetBvh& bvh, std::span<const Vec3> 
   std::vector<std::pair<std::int32_t, std::uint64_t>> missed, extra;
   std::set_difference(walked.begin(), walked.end(), narrowed.begin(), narrowed.end(), std::back_inserter(missed));
   std::set_difference(narrowed.begin(), narrowed.end(), walked.begin(), walked.end(), std::back_inserter(extra));
-  const auto first = [](const auto& v) { return v.empty() ? std::string("none") : "tet " + std::to_string(v.front().first); };
+  const auto first = [](const auto& v) {
+    return v.empty() ? std::string("none") : "tet " + std::to_string(v.front().first);
+  };
   throw std::logic_error("MtCut: the narrowed search changes " + std::to_string(narrowed.size()) +
                          " tets, a walk of the whole polygon " + std::to_string(walked.size()) + " (" +
                          std::to_string(missed.size()) + " missed, first " + first(missed) + "; " +

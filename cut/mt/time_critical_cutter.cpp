@@ -115,7 +115,6 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
       record = part_->record;
       part_.reset();
       frame_.reset();  // the end takes every tet the part's frames left
-      balanced_.reset();
     } else if (pivot_) {
       polygon = pivoted(*pivot_, ended[i].corners());
     } else {
@@ -142,7 +141,6 @@ std::optional<CutRetraction> TimeCriticalCutter::recut(Mt& mt, TetBvh& bvh, std:
     }
     part_.reset();
     frame_.reset();
-    balanced_.reset();
     pivot_.reset();
     crossing_.reset();
     return out;
