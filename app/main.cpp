@@ -1,6 +1,7 @@
 // mtcut: the command line. Each subcommand lives in its own file and
 // registers itself here. Errors a user can cause in an input end as one line
-// on stderr and exit code 1, as does any other fault (the line names the
+// on stderr (with the advice their hint asks for, in this command line's
+// terms) and exit code 1, as does any other fault (the line names the
 // command and its inputs then); command-line usage errors exit 2.
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,7 @@
 #include "app/cut_command.h"
 #include "app/hid/hid_command.h"
 #include "app/mesh_command.h"
+#include "app/mesh_input_options.h"
 #include "app/mt_command.h"
 #include "app/run_command.h"
 #include "app/view/view_command.h"
@@ -55,7 +57,7 @@ int main(int argc, char** argv) {
     // --help and --version exit 0; usage errors exit 2, like most tools.
     return app.exit(e) == 0 ? 0 : 2;
   } catch (const mtcut::engine::InputError& e) {
-    std::cerr << "mtcut: " << e.what() << "\n";
+    std::cerr << "mtcut: " << mtcut::app::add_advice(e.what(), e.hint()) << "\n";
     return 1;
   } catch (const std::bad_alloc&) {
     std::cerr << failed_command(app) << ": out of memory\n";

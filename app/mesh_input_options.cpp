@@ -46,6 +46,20 @@ void apply_mesh_input_options(const MeshInputOptions& options, engine::MeshLoadD
   }
 }
 
+std::string add_advice(const std::string& line, const engine::InputHint& hint) {
+  switch (hint.kind) {
+    case engine::InputHint::Kind::kNone: return line;
+    case engine::InputHint::Kind::kUnits: {
+      if (hint.unit.empty())
+        return line + "; give the file's unit with --units or --scale, or [mesh] units or scale in a scenario";
+      const std::string unit(hint.unit);
+      return line + "; if so, say --units " + unit + ", or [mesh] units = \"" + unit + "\" in a scenario";
+    }
+    case engine::InputHint::Kind::kMaxVolume: return line + "; raise --max-volume, or [mesh] max_volume in a scenario";
+  }
+  return line;
+}
+
 engine::LoadedMesh load_input_mesh(const std::string& spec, engine::MeshLoadDef load) {
   bool shown = false;
   if (::isatty(STDERR_FILENO))
@@ -64,7 +78,7 @@ engine::LoadedMesh load_input_mesh(const std::string& spec, engine::MeshLoadDef 
     throw;
   }
   erase();
-  for (const std::string& note : loaded.notes) std::cerr << "mtcut: " << note << "\n";
+  for (const engine::InputNote& note : loaded.notes) std::cerr << "mtcut: " << add_advice(note.text, note.hint) << "\n";
   return loaded;
 }
 

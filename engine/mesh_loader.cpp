@@ -45,7 +45,7 @@ void scale_positions(std::vector<Vec3>& positions, double metres_per_unit) {
 }
 
 TetMesh mesh_surface(SurfaceMesh surface, const MeshLoadDef& def, const std::string& spec,
-                     std::vector<std::string>& notes) {
+                     std::vector<InputNote>& notes) {
   scale_positions(surface.positions, def.metres_per_unit);
   if (auto note = implausible_size_note(surface.positions, def, spec)) notes.push_back(std::move(*note));
   if (def.strict) return tetrahedralize(surface, def.meshing, spec, &notes);
@@ -53,7 +53,7 @@ TetMesh mesh_surface(SurfaceMesh surface, const MeshLoadDef& def, const std::str
   const SurfaceRepair repair = repair_surface(surface, spec);
   try {
     TetMesh mesh = tetrahedralize(surface, def.meshing, spec, &notes);
-    if (repair.changed()) notes.push_back(repair.describe(spec));
+    if (repair.changed()) notes.push_back({repair.describe(spec)});
     return mesh;
   } catch (const SurfaceRefused&) {
     // What TetGen still refuses for its geometry (faces closer than its
@@ -63,8 +63,8 @@ TetMesh mesh_surface(SurfaceMesh surface, const MeshLoadDef& def, const std::str
     surface = input;
     const SurfaceRepair wrapped = repair_surface(surface, spec, true);
     TetMesh mesh = tetrahedralize(surface, def.meshing, spec, &notes);
-    notes.push_back(wrapped.describe(spec) + " (TetGen refused the " +
-                    (repair.changed() ? std::string("lighter repair") : std::string("surface as it was")) + ")");
+    notes.push_back({wrapped.describe(spec) + " (TetGen refused the " +
+                     (repair.changed() ? std::string("lighter repair") : std::string("surface as it was")) + ")"});
     return mesh;
   }
 }
@@ -76,8 +76,8 @@ LoadedMesh load_file(const std::string& spec, const MeshLoadDef& def) {
   if (format == MeshFormat::kUnknown)
     throw InputError(spec + ": unknown mesh format (surfaces: .obj .off .stl .ply; tet meshes: .node .ele .msh .vtk .vtu)");
   if (format != named)
-    loaded.notes.push_back(spec + ": read as " + format_name(format) + ", which its content is" +
-                           (named == MeshFormat::kUnknown ? std::string() : ", not " + format_name(named)));
+    loaded.notes.push_back({spec + ": read as " + format_name(format) + ", which its content is" +
+                            (named == MeshFormat::kUnknown ? std::string() : ", not " + format_name(named))});
   if (is_surface_format(format)) {
     loaded.mesh = mesh_surface(read_surface_file(spec, format), def, spec, loaded.notes);
     loaded.kind = "surface";
@@ -90,9 +90,9 @@ LoadedMesh load_file(const std::string& spec, const MeshLoadDef& def) {
     if (auto note = implausible_size_note(raw.positions, def, spec)) loaded.notes.push_back(std::move(*note));
     loaded.mesh = make_tet_mesh(std::move(raw.positions), raw.tets, spec);
     if (const std::size_t split = split_pinched_vertices(loaded.mesh); split > 0)
-      loaded.notes.push_back(spec + ": parts of the mesh touch only at " + std::to_string(split) +
-                             (split == 1 ? " vertex" : " vertices") +
-                             " (or along edges through them); each part has its own copy of those vertices now");
+      loaded.notes.push_back({spec + ": parts of the mesh touch only at " + std::to_string(split) +
+                              (split == 1 ? " vertex" : " vertices") +
+                              " (or along edges through them); each part has its own copy of those vertices now"});
     loaded.kind = "volume";
     return loaded;
   }
@@ -128,8 +128,8 @@ std::optional<double> metres_per_unit(const std::string& name) {
   return std::nullopt;
 }
 
-std::optional<std::string> implausible_size_note(const std::vector<Vec3>& positions, const MeshLoadDef& def,
-                                                 const std::string& source) {
+std::optional<InputNote> implausible_size_note(const std::vector<Vec3>& positions, const MeshLoadDef& def,
+                                               const std::string& source) {
   if (def.unit_stated || positions.empty()) return std::nullopt;
   Vec3 lo = positions.front(), hi = lo;
   for (const Vec3& p : positions) {
@@ -146,15 +146,15 @@ std::optional<std::string> implausible_size_note(const std::vector<Vec3>& positi
     if (std::abs(std::log(in_file_units * u.metres / kTypicalDiagonal)) <
         std::abs(std::log(in_file_units * best->metres / kTypicalDiagonal)))
       best = &u;
-  std::string note = source + ": the mesh is " + format_length(diagonal) +
+  InputNote note{source + ": the mesh is " + format_length(diagonal) +
                      " across (its bounding box's diagonal) with its coordinates read as " +
-                     unit_name(def.metres_per_unit) + ", which is not an organ's size";
+                     unit_name(def.metres_per_unit) + ", which is not an organ's size",
+                 {InputHint::Kind::kUnits, {}}};
   if (best->metres != def.metres_per_unit && in_file_units * best->metres >= kPlausibleMinDiagonal &&
-      in_file_units * best->metres <= kPlausibleMaxDiagonal)
-    note += std::string("; if they are ") + best->name + ", say --units " + best->symbol + " ([mesh] units = \"" +
-            best->symbol + "\" in a scenario)";
-  else
-    note += "; give their unit with --units or [mesh] scale";
+      in_file_units * best->metres <= kPlausibleMaxDiagonal) {
+    note.text += std::string("; they may be ") + best->name;
+    note.hint.unit = best->symbol;
+  }
   return note;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/builtin_shapes.h"
+#include "engine/input_error.h"
 #include "engine/tet_mesh.h"
 #include "engine/tetrahedralize.h"
 
@@ -31,8 +32,8 @@ struct MeshLoadDef {
 // What happened on the way, for the report.
 struct LoadedMesh {
   TetMesh mesh;
-  std::string kind;                // "builtin", "surface" or "volume"
-  std::vector<std::string> notes;  // one line each, for the user: a repair, a size that looks like other units, ...
+  std::string kind;              // "builtin", "surface" or "volume"
+  std::vector<InputNote> notes;  // one line each, for the user: a repair, a size that looks like other units, ...
 };
 
 // The metres in one "m", "dm", "cm" or "mm"; nullopt for any other name.
@@ -44,10 +45,11 @@ inline constexpr double kPlausibleMinDiagonal = 1e-3;
 inline constexpr double kPlausibleMaxDiagonal = 5.0;
 
 // A note when `positions` (metres) are not organ-sized: how large they are,
-// read in the unit given, and the unit that would make them so; nullopt when
-// they are organ-sized or the unit was stated.
-std::optional<std::string> implausible_size_note(const std::vector<Vec3>& positions, const MeshLoadDef& def,
-                                                 const std::string& source);
+// read in the unit given, and the unit that would make them so (named, and
+// its symbol in a kUnits hint; the hint's unit is empty when no unit does);
+// nullopt when they are organ-sized or the unit was stated.
+std::optional<InputNote> implausible_size_note(const std::vector<Vec3>& positions, const MeshLoadDef& def,
+                                               const std::string& source);
 
 // `spec` is builtin:NAME, a surface (.obj .off .stl .ply, or a .vtk/.msh
 // holding only triangles; repaired unless def.strict) or a tet mesh file

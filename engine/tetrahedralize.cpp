@@ -172,7 +172,7 @@ std::string self_intersections(const SurfaceMesh& surface, const TetgenRun& run)
 
 std::string tetgen_fault(int code, const std::string& chatter) {
   switch (code) {
-    case 1: return "TetGen ran out of memory (raise --max-volume)";
+    case 1: return "TetGen ran out of memory";
     case 3: return "the surface intersects itself";
     case 4: return "the surface has features too small for TetGen's tolerance";
     case 5: return "the surface has two facets too close to each other";
@@ -203,7 +203,7 @@ long steiner_point_bound(const SurfaceMesh& surface, const TetrahedralizeOptions
 }
 
 TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& options, const std::string& source,
-                       std::vector<std::string>* notes) {
+                       std::vector<InputNote>* notes) {
   using Clock = std::chrono::steady_clock;
   if (surface.triangles.size() < 4) throw InputError(source + ": the surface has fewer than 4 faces");
   if (const std::size_t open = surface.count_open_edges(); open > 0)
@@ -253,7 +253,13 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& 
     TetgenRun run = run_tetgen(surface, switches_for(tries[i], false) + "S" + std::to_string(bound), tries[i],
                                deadline, start);
     if (run.outcome == TetgenRun::Outcome::kTetgenError) {
-      if (run.code == 1) throw InputError(source + ": " + tetgen_fault(run.code, run.chatter));  // out of memory
+      if (run.code == 1) {
+        // Out of memory: larger tets take less, when a largest is asked for.
+        const std::string fault = source + ": " + tetgen_fault(run.code, run.chatter);
+        if (!(options.max_volume > 0)) throw InputError(fault);
+        throw InputError(fault + " meshing to tets of at most " + format_number(options.max_volume) + " m^3",
+                         {InputHint::Kind::kMaxVolume, {}});
+      }
       throw SurfaceRefused(source + ": " + tetgen_fault(run.code, run.chatter));
     }
     if (run.outcome == TetgenRun::Outcome::kDone && run.tets.empty())
@@ -265,13 +271,14 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& 
       const std::string kept = tries[i].radius_edge_ratio > 0
                                    ? "the looser quality bound " + format_number(tries[i].radius_edge_ratio)
                                    : std::string("no quality refinement");
-      if (notes && i > 0 && !at_bound) notes->push_back(source + ": TetGen " + why + "; meshed with " + kept + " instead");
+      if (notes && i > 0 && !at_bound)
+        notes->push_back({source + ": TetGen " + why + "; meshed with " + kept + " instead"});
       if (notes && i > 0 && at_bound)
-        notes->push_back(source + ": TetGen " + why + "; with " + kept + " it reached its bound of " +
-                         std::to_string(bound) +
-                         " added points, and that mesh is kept: its quality is below what was asked for");
+        notes->push_back({source + ": TetGen " + why + "; with " + kept + " it reached its bound of " +
+                          std::to_string(bound) +
+                          " added points, and that mesh is kept: its quality is below what was asked for"});
       if (notes && i == 0 && at_bound)
-        notes->push_back(source + ": TetGen stopped at its bound of " + std::to_string(bound) + " added points");
+        notes->push_back({source + ": TetGen stopped at its bound of " + std::to_string(bound) + " added points"});
       return make_tet_mesh(std::move(run.positions), run.tets, source);
     }
     timed_out = run.outcome == TetgenRun::Outcome::kTimedOut;

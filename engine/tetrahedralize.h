@@ -46,8 +46,9 @@ long steiner_point_bound(const SurfaceMesh& surface, const TetrahedralizeOptions
 // messages and notes; `notes`, when given, receives a line for a retry with
 // looser quality. Throws SurfaceRefused for open, self-intersecting or
 // degenerate surfaces and for a TetGen that crashes on them, and
-// InputError for a TetGen that overruns the time limit or memory.
+// InputError for a TetGen that overruns the time limit or memory (with a
+// kMaxVolume hint when options.max_volume bounds the tets).
 TetMesh tetrahedralize(const SurfaceMesh& surface, const TetrahedralizeOptions& options, const std::string& source,
-                       std::vector<std::string>* notes = nullptr);
+                       std::vector<InputNote>* notes = nullptr);
 
 }  // namespace mtcut::engine

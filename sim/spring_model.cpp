@@ -209,8 +209,9 @@ SpringModel build_spring_model(std::span<const Tet> tets, std::span<const Vec3> 
   // The sums stay in range (fixed_volume.h) while the body does.
   if (!(total_volume < kMaxFixedVolumeTerm))
     throw engine::InputError("the tets' volume, " + std::to_string(total_volume) +
-                             " m^3, is beyond what the spring model holds: are the mesh's coordinates in "
-                             "millimetres or centimetres? say so with [mesh] units or --units");
+                                 " m^3, is beyond what the spring model holds; the mesh's coordinates may be "
+                                 "millimetres or centimetres",
+                             {engine::InputHint::Kind::kUnits, {}});
   add_springs(local, volumes, model);
   for (std::size_t s = 0; s < model.num_springs(); ++s) model_parts::set_spring_constants(model, s, material);
   std::vector<char> fixed(n, 0);

@@ -99,8 +99,8 @@ struct SpringModel {
 
 // Builds the model on `tets` (vertex ids into rest_positions, positively
 // oriented). `is_fixed(v)` pins the particle of MT vertex v. Throws
-// engine::InputError when the body is too large for the model's fixed-point
-// volume sums (a mesh in millimetres read as metres).
+// engine::InputError, with a kUnits hint, when the body is too large for the
+// model's fixed-point volume sums (a mesh in millimetres read as metres).
 SpringModel build_spring_model(std::span<const Tet> tets, std::span<const Vec3> rest_positions,
                                const MaterialDef& material, const std::function<bool(VertId)>& is_fixed = {});
 

@@ -49,7 +49,7 @@ TEST(LoadMesh, AUnitScalesTetMeshesAndSurfacesToMetres) {
     def.unit_stated = true;
     const LoadedMesh loaded = load_mesh(path, def);
     EXPECT_NEAR(compute_stats(loaded.mesh).volume, 0.1 * 0.2 * 0.05, 1e-12) << path;
-    EXPECT_TRUE(loaded.notes.empty()) << path << ": " << loaded.notes.front();
+    EXPECT_TRUE(loaded.notes.empty()) << path << ": " << loaded.notes.front().text;
   }
 }
 
@@ -59,20 +59,35 @@ TEST(LoadMesh, AMeshInMillimetresReadAsMetresIsToldToSayMillimetres) {
   for (const std::string& path : {files.vtu, files.obj}) {
     const LoadedMesh loaded = load_mesh(path, {});
     ASSERT_EQ(loaded.notes.size(), 1u) << path;
-    EXPECT_NE(loaded.notes[0].find(path), std::string::npos) << loaded.notes[0];
-    EXPECT_NE(loaded.notes[0].find("--units mm"), std::string::npos) << loaded.notes[0];
-    EXPECT_EQ(loaded.notes[0].find('\n'), std::string::npos);
+    const InputNote& note = loaded.notes[0];
+    EXPECT_NE(note.text.find(path), std::string::npos) << note.text;
+    EXPECT_NE(note.text.find("they may be millimetres"), std::string::npos) << note.text;
+    EXPECT_EQ(note.text.find('\n'), std::string::npos);
+    EXPECT_EQ(note.hint.kind, InputHint::Kind::kUnits);
+    EXPECT_EQ(note.hint.unit, "mm");
+    // The advice in a command line's terms is the app's: the note names no flag.
+    EXPECT_EQ(note.text.find("--"), std::string::npos) << note.text;
   }
 }
 
+// The unit suggested is named in the note and given by its symbol in the
+// hint; a size no unit makes organ-sized still hints at the unit, naming none.
 TEST(LoadMesh, SizesSuggestTheUnitThatMakesThemOrganSized) {
-  const std::vector<std::pair<double, std::string>> cases = {
-      {25.0, "--units cm"}, {2500.0, "--units mm"}, {0.0002, "give their unit"}};
-  for (const auto& [extent, says] : cases) {
+  struct Case {
+    double extent;
+    std::string unit, says;
+  };
+  const std::vector<Case> cases = {
+      {25.0, "cm", "; they may be centimetres"}, {2500.0, "mm", "; they may be millimetres"}, {0.0002, "", ""}};
+  for (const auto& [extent, unit, says] : cases) {
     const std::vector<Vec3> box = {Vec3::Zero(), Vec3(extent, 0.6 * extent, 0.5 * extent)};
     const auto note = implausible_size_note(box, {}, "organ.obj");
     ASSERT_TRUE(note) << extent;
-    EXPECT_NE(note->find(says), std::string::npos) << *note;
+    EXPECT_EQ(note->hint.kind, InputHint::Kind::kUnits) << extent;
+    EXPECT_EQ(note->hint.unit, unit) << extent;
+    const std::string fact = ", which is not an organ's size" + says;
+    ASSERT_GE(note->text.size(), fact.size()) << note->text;
+    EXPECT_EQ(note->text.substr(note->text.size() - fact.size()), fact) << note->text;
   }
   const std::vector<Vec3> organ = {Vec3::Zero(), Vec3(0.2, 0.1, 0.1)};
   EXPECT_FALSE(implausible_size_note(organ, {}, "organ.obj"));
@@ -98,7 +113,8 @@ TEST(LoadMesh, AFileIsReadAsItsContentSaysWithANote) {
     const LoadedMesh loaded = load_mesh(path, {});
     EXPECT_NEAR(compute_stats(loaded.mesh).volume, 0.1 * 0.08 * 0.06, 1e-9) << path;  // OBJ keeps floats
     ASSERT_EQ(loaded.notes.size(), 1u) << path;
-    EXPECT_EQ(loaded.notes[0], path + ": " + says);
+    EXPECT_EQ(loaded.notes[0].text, path + ": " + says);
+    EXPECT_EQ(loaded.notes[0].hint.kind, InputHint::Kind::kNone);
   }
   EXPECT_TRUE(load_mesh(files.obj, {}).notes.empty());
 }

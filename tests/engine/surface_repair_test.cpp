@@ -135,8 +135,9 @@ TEST(SurfaceRepair, LoadMeshRepairsUnlessStrict) {
   const LoadedMesh loaded = load_mesh(path, {});
   EXPECT_TRUE(loaded.mesh.validate().ok());
   ASSERT_EQ(loaded.notes.size(), 1u);
-  EXPECT_NE(loaded.notes[0].find(path + ": repaired (self-intersections resolved)"), std::string::npos)
-      << loaded.notes[0];
+  EXPECT_NE(loaded.notes[0].text.find(path + ": repaired (self-intersections resolved)"), std::string::npos)
+      << loaded.notes[0].text;
+  EXPECT_EQ(loaded.notes[0].hint.kind, InputHint::Kind::kNone);
   MeshLoadDef strict;
   strict.strict = true;
   const std::string m = input_error_of([&] { load_mesh(path, strict); });

@@ -115,14 +115,16 @@ TEST(Tetrahedralize, RefinementStopsAtItsBoundOfAddedPointsAndSaysSo) {
   EXPECT_LT(steiner_point_bound(tube, {}), 200000);
   TetrahedralizeOptions options;
   options.max_added_points = 3000;
-  std::vector<std::string> notes;
+  std::vector<InputNote> notes;
   const TetMesh mesh = tetrahedralize(tube, options, "tube.obj", &notes);
   EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().summary();
   EXPECT_LE(mesh.num_vertices(), tube.positions.size() + 3000);
   EXPECT_NEAR(mesh.total_volume(), tube.enclosed_volume(), 1e-9 * tube.enclosed_volume());
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_NE(notes[0].find("tube.obj: TetGen reached its bound of 3000 added points"), std::string::npos) << notes[0];
-  EXPECT_NE(notes[0].find("looser quality bound 2.25"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[0].text.find("tube.obj: TetGen reached its bound of 3000 added points"), std::string::npos)
+      << notes[0].text;
+  EXPECT_NE(notes[0].text.find("looser quality bound 2.25"), std::string::npos) << notes[0].text;
+  EXPECT_EQ(notes[0].hint.kind, InputHint::Kind::kNone);
   // Within the bound, no note.
   notes.clear();
   (void)tetrahedralize(read_surface_file(test::shared_mesh("liver2.obj")), {}, "liver2.obj", &notes);

@@ -38,6 +38,27 @@ TEST(SpringModel, OneSpringPerEdgeAndExactMass) {
             1);
 }
 
+// A body beyond the fixed-point volume sums (a mesh in millimetres read as
+// metres) is refused with the fact and a hint at the mesh's unit; the
+// advice in a command line's terms is the app's.
+TEST(SpringModel, ABodyTooLargeForTheVolumeSumsIsRefusedWithAUnitsHint) {
+  const engine::TetMesh mesh = box_mesh(50, Vec3(100, 60, 50));
+  try {
+    (void)build_spring_model(mesh.tets, mesh.positions, MaterialDef{});
+    FAIL() << "a body of 300000 m^3 was built";
+  } catch (const engine::InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("m^3, is beyond what the spring model holds; the mesh's coordinates may be millimetres or "
+                     "centimetres"),
+              std::string::npos)
+        << m;
+    EXPECT_EQ(m.find("--"), std::string::npos) << m;
+    EXPECT_EQ(m.find("[mesh]"), std::string::npos) << m;
+    EXPECT_EQ(e.hint().kind, engine::InputHint::Kind::kUnits);
+    EXPECT_TRUE(e.hint().unit.empty());
+  }
+}
+
 // The implicit solver's Gauss-Seidel sweeps walk the springs grouped by
 // first particle: build_spring_model emits them sorted by (a, b).
 TEST(SpringModel, SpringsAreSortedByFirstThenSecondParticle) {
