@@ -200,18 +200,21 @@ SpringModel build_spring_model(std::span<const Tet> tets, std::span<const Vec3> 
     volumes[t] = engine::signed_volume(model.rest_position[p[0]], model.rest_position[p[1]],
                                        model.rest_position[p[2]], model.rest_position[p[3]]);
     total_volume += std::abs(volumes[t]);
-    const FixedVolume volume = to_fixed_volume(volumes[t]);
-    for (int k = 0; k < 4; ++k) {
-      model.particle_volume[p[k]] += volume;
-      ++model.particle_tets[p[k]];
-    }
   }
-  // The sums stay in range (fixed_volume.h) while the body does.
+  // The sums stay in range (fixed_volume.h) while the body does: checked
+  // before any is taken, since a larger body would overflow them.
   if (!(total_volume < kMaxFixedVolumeTerm))
     throw engine::InputError("the tets' volume, " + std::to_string(total_volume) +
                                  " m^3, is beyond what the spring model holds; the mesh's coordinates may be "
                                  "millimetres or centimetres",
                              {engine::InputHint::Kind::kUnits, {}});
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const FixedVolume volume = to_fixed_volume(volumes[t]);
+    for (int k = 0; k < 4; ++k) {
+      model.particle_volume[local[t][k]] += volume;
+      ++model.particle_tets[local[t][k]];
+    }
+  }
   add_springs(local, volumes, model);
   for (std::size_t s = 0; s < model.num_springs(); ++s) model_parts::set_spring_constants(model, s, material);
   std::vector<char> fixed(n, 0);
