@@ -19,9 +19,9 @@ struct MeshLoadDef {
   TetrahedralizeOptions meshing;  // for builtin shapes and surfaces, in metres
   Vec3 builtin_size = BuiltinShapeDef{}.size;
   int builtin_tets = BuiltinShapeDef{}.target_tets;
-  // A mesh file's length unit in metres ([mesh] units or scale, --units):
-  // its coordinates are multiplied by it as they are read. Builtin shapes
-  // are sized in metres and take no unit.
+  // A mesh file's length unit in metres, as the user states it: its
+  // coordinates are multiplied by it as they are read. Builtin shapes are
+  // sized in metres and take no unit.
   double metres_per_unit = 1.0;
   bool unit_stated = false;  // the user named the unit (no size warning then)
   // A surface that is not closed, manifold and free of self-intersections
