@@ -14,51 +14,56 @@ using engine::UnionFind;
 using engine::VertId;
 
 
-// The pieces' union-find. Nodes: the finest tets in the order of
-// created(root) (node i is created(root)[i]), then one per fragment (n_fine
-// + f). Finest tets are joined through their shared vertices, and every
-// live tet (through the fragments' lists: no pass over dead slots) joins
-// its birth with its death, the drain aside.
-UnionFind join_pieces(const Mt& mt) {
-  const std::span<const TetId> finest = mt.created(mt.root());
-  const std::size_t n_fine = finest.size();
-  UnionFind uf(n_fine + mt.num_fragments());
-  std::vector<std::int32_t> owner(mt.num_vertices(), -1);
-  for (std::size_t i = 0; i < n_fine; ++i)
-    for (VertId v : mt.tet(finest[i])) {
-      if (owner[v.index()] < 0)
-        owner[v.index()] = static_cast<std::int32_t>(i);
-      else
-        uf.unite(owner[v.index()], static_cast<std::int32_t>(i));
-    }
-  for (std::size_t f = 0; f < mt.num_fragments(); ++f) {
-    if (FragId(f) == mt.drain()) continue;
-    const std::span<const TetId> created = mt.created(FragId(f));
-    const bool root = FragId(f) == mt.root();
-    for (std::size_t i = 0; i < created.size(); ++i) {
-      const FragId death = mt.death(created[i]);
-      if (death == mt.drain()) continue;
-      uf.unite(static_cast<std::int32_t>(root ? i : n_fine + f), static_cast<std::int32_t>(n_fine + death.index()));
-    }
+// The pieces' union-find. Nodes: the MT's vertices (node v), then one per
+// fragment (n_vertices + f). A finest tet joins its four vertices, and every
+// live tet joins its birth with its death, the drain aside (a finest tet's
+// birth being its vertices). Finest tets sharing a vertex are in one piece
+// either way; on vertices, the sets fit in cache (the MT has a fifth as many
+// vertices as tets), and one pass over the tet slots in order reads the
+// arrays as they are stored, where the fragments' lists scatter the reads.
+struct PieceSets {
+  UnionFind sets;
+  std::size_t n_vertices;
+  std::int32_t vertex(VertId v) const { return static_cast<std::int32_t>(v.index()); }
+  std::int32_t fragment(FragId f) const { return static_cast<std::int32_t>(n_vertices + f.index()); }
+  // A live tet's node: its birth's, or its first vertex's for a finest tet.
+  std::int32_t tet(const Mt& mt, TetId t) const {
+    return mt.birth(t) == mt.root() ? vertex(mt.tet(t)[0]) : fragment(mt.birth(t));
   }
-  return uf;
+};
+
+PieceSets join_pieces(const Mt& mt) {
+  PieceSets pieces{UnionFind(mt.num_vertices() + mt.num_fragments()), mt.num_vertices()};
+  UnionFind& sets = pieces.sets;
+  const FragId root = mt.root(), drain = mt.drain();
+  for (std::size_t i = 0; i < mt.num_tets(); ++i) {
+    const TetId t(i);
+    if (!mt.alive(t)) continue;
+    const FragId birth = mt.birth(t), death = mt.death(t);
+    std::int32_t node;
+    if (birth == root) {
+      const engine::Tet& tet = mt.tet(t);
+      node = pieces.vertex(tet[0]);
+      for (int k = 1; k < 4; ++k) sets.unite(node, pieces.vertex(tet[k]));
+    } else {
+      node = pieces.fragment(birth);
+    }
+    if (death != drain) sets.unite(node, pieces.fragment(death));
+  }
+  return pieces;
 }
 
 }  // namespace
 
 MtPieces find_pieces(const Mt& mt) {
-  UnionFind uf = join_pieces(mt);
-  const std::size_t n_fine = mt.created(mt.root()).size();
-  const auto node = [&](TetId t) {
-    return static_cast<std::int32_t>(mt.birth(t) == mt.root() ? mt.birth_slot(t) : n_fine + mt.birth(t).index());
-  };
+  PieceSets sets = join_pieces(mt);
   // Numbered in ascending order of the tet ids of the finest tets.
   MtPieces pieces;
-  std::vector<std::int32_t> piece_of_root(uf.size(), -1);
+  std::vector<std::int32_t> piece_of_root(sets.sets.size(), -1);
   for (std::size_t i = 0; i < mt.num_tets(); ++i) {
     const TetId t(i);
     if (!mt.alive(t) || mt.birth(t) != mt.root()) continue;
-    const auto r = static_cast<std::size_t>(uf.find(node(t)));
+    const auto r = static_cast<std::size_t>(sets.sets.find(sets.tet(mt, t)));
     if (piece_of_root[r] < 0) {
       piece_of_root[r] = static_cast<std::int32_t>(pieces.count++);
       pieces.finest_tets.push_back(0);
@@ -69,24 +74,29 @@ MtPieces find_pieces(const Mt& mt) {
   pieces.fragment_piece.assign(mt.num_fragments(), -1);
   for (std::size_t f = 0; f < mt.num_fragments(); ++f) {
     if (FragId(f) == mt.root() || FragId(f) == mt.drain()) continue;
-    const std::int32_t p = piece_of_root[static_cast<std::size_t>(uf.find(static_cast<std::int32_t>(n_fine + f)))];
+    const std::int32_t p = piece_of_root[static_cast<std::size_t>(sets.sets.find(sets.fragment(FragId(f))))];
     pieces.fragment_piece[f] = p;
     if (p >= 0) pieces.fragments[static_cast<std::size_t>(p)].emplace_back(f);
   }
   pieces.tet_piece.assign(mt.num_tets(), -1);
   for (std::size_t i = 0; i < mt.num_tets(); ++i)
     if (mt.alive(TetId(i)))
-      pieces.tet_piece[i] = piece_of_root[static_cast<std::size_t>(uf.find(node(TetId(i))))];
+      pieces.tet_piece[i] = piece_of_root[static_cast<std::size_t>(sets.sets.find(sets.tet(mt, TetId(i))))];
   return pieces;
 }
 
 std::size_t count_pieces(const Mt& mt) {
-  // A component's root is its smallest node (UnionFind::unite), a finest
-  // tet's when it holds one: fragment nodes come after them.
-  UnionFind uf = join_pieces(mt);
+  // The sets that hold a finest tet's vertex: a vertex only cuts and
+  // retractions left unused is a set of its own, and so may be a fragment
+  // a retraction emptied.
+  PieceSets sets = join_pieces(mt);
+  std::vector<std::uint8_t> counted(sets.sets.size(), 0);
   std::size_t count = 0;
-  const std::size_t n_fine = mt.created(mt.root()).size();
-  for (std::size_t i = 0; i < n_fine; ++i) count += uf.is_root(static_cast<std::int32_t>(i));
+  for (TetId t : mt.created(mt.root())) {
+    std::uint8_t& seen = counted[static_cast<std::size_t>(sets.sets.find(sets.vertex(mt.tet(t)[0])))];
+    count += seen == 0;
+    seen = 1;
+  }
   return count;
 }
 
