@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
+#include <numeric>
+#include <utility>
+#include <vector>
 
 #include "engine/input_error.h"
 #include "engine/tet_adjacency.h"
@@ -62,11 +64,18 @@ ValidationReport TetMesh::validate() const {
     if (sign < 0) report.add("tet " + std::to_string(t) + " is negatively oriented");
   }
 
-  std::map<std::array<std::int32_t, 4>, std::size_t> first_with;
-  for (std::size_t t = 0; t < sorted.size(); ++t) {
-    auto [it, inserted] = first_with.emplace(sorted[t], t);
-    if (!inserted) report.add("tets " + std::to_string(it->second) + " and " + std::to_string(t) + " are duplicates");
+  // Duplicates: equal sorted ids, each reported against the first tet with them.
+  std::vector<std::uint32_t> by_ids(tets.size());
+  std::iota(by_ids.begin(), by_ids.end(), 0u);
+  std::stable_sort(by_ids.begin(), by_ids.end(), [&](std::uint32_t a, std::uint32_t b) { return sorted[a] < sorted[b]; });
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;  // (later tet, first tet)
+  for (std::size_t i = 1, first = 0; i < by_ids.size(); ++i) {
+    if (sorted[by_ids[i]] != sorted[by_ids[first]]) first = i;
+    else duplicates.emplace_back(by_ids[i], by_ids[first]);
   }
+  std::sort(duplicates.begin(), duplicates.end());
+  for (const auto& [t, first] : duplicates)
+    report.add("tets " + std::to_string(first) + " and " + std::to_string(t) + " are duplicates");
 
   const TetAdjacency adj = build_adjacency(*this);
   if (adj.non_manifold_faces > 0)
@@ -88,12 +97,18 @@ ValidationReport TetMesh::validate() const {
   }
   // Manifold boundary: every boundary edge is used by exactly two boundary
   // faces, once in each direction.
-  std::map<std::pair<std::int32_t, std::int32_t>, int> directed;
+  std::vector<std::pair<std::int32_t, std::int32_t>> directed;
+  directed.reserve(3 * adj.boundary.size());
   for (const auto& bf : adj.boundary)
-    for (int k = 0; k < 3; ++k) ++directed[{bf.verts[k].value, bf.verts[(k + 1) % 3].value}];
-  for (const auto& [edge, count] : directed) {
-    const auto back = directed.find({edge.second, edge.first});
-    const int reverse = back == directed.end() ? 0 : back->second;
+    for (int k = 0; k < 3; ++k) directed.emplace_back(bf.verts[k].value, bf.verts[(k + 1) % 3].value);
+  std::sort(directed.begin(), directed.end());
+  for (auto it = directed.begin(); it != directed.end();) {
+    const auto edge = *it;
+    const auto next = std::find_if(it, directed.end(), [&](const auto& e) { return e != edge; });
+    const auto count = next - it;
+    it = next;
+    const auto back = std::equal_range(directed.begin(), directed.end(), std::pair{edge.second, edge.first});
+    const auto reverse = back.second - back.first;
     if (count != 1 || reverse != 1) {
       if (edge.first < edge.second || reverse == 0)
         report.add("boundary edge (" + std::to_string(edge.first) + ", " + std::to_string(edge.second) +

@@ -5,6 +5,7 @@
 #include <cassert>
 
 #include "engine/mt/tet_error.h"
+#include "engine/radix_sort.h"
 #include "engine/reserve_geometric.h"
 #include "engine/tet_adjacency.h"
 #include "engine/tet_geometry.h"
@@ -389,8 +390,12 @@ std::vector<OrientedFace> outer_faces(const Mt& mt, std::span<const TetId> tets)
       faces.push_back(face);
     }
   }
-  std::sort(faces.begin(), faces.end(), [](const OrientedFace& a, const OrientedFace& b) {
-    return a.sorted < b.sorted || (a.sorted == b.sorted && a.tet < b.tet);
+  // By (sorted ids, tet): the copies of a face become neighbours.
+  std::vector<OrientedFace> scratch;
+  radix_sort<2>(faces, scratch, [](const OrientedFace& f) {
+    const auto id = [](std::int32_t v) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)); };
+    return std::array<std::uint64_t, 2>{id(f.sorted[0].value) << 32 | id(f.sorted[1].value),
+                                        id(f.sorted[2].value) << 32 | id(f.tet.value)};
   });
   std::vector<OrientedFace> outer;
   for (std::size_t i = 0; i < faces.size();) {
