@@ -11,6 +11,7 @@
 #include "engine/io/mesh_file.h"
 #include "engine/mesh_loader.h"
 #include "engine/surface_mesh.h"
+#include "engine/text.h"
 
 namespace mtcut::app {
 namespace {
@@ -22,12 +23,6 @@ struct MeshOptions {
   MeshInputOptions mesh_input;
   bool json = false;
 };
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 void run_mesh(MeshOptions& options) {
   apply_mesh_input_options(options.mesh_input, options.load);
@@ -46,7 +41,7 @@ void run_mesh(MeshOptions& options) {
 }  // namespace
 
 void write_mesh_output(const engine::TetMesh& mesh, const std::string& path) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = engine::lower_extension(path);
   if (ext == ".vtu") {
     engine::write_vtu(mesh, path,
                       {{"min_dihedral_deg", engine::tet_min_dihedral_deg(mesh)},

@@ -14,6 +14,7 @@
 #include "engine/mt/mt_builder.h"
 #include "engine/mt/mt_presets.h"
 #include "engine/mt/mt_stats.h"
+#include "engine/stopwatch.h"
 
 namespace mtcut::app {
 namespace {
@@ -28,10 +29,6 @@ struct MtOptions {
   bool skip_validation = false;
   bool json = false;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 void run_mt(MtOptions& options) {
   std::string spec = options.input;
@@ -72,7 +69,7 @@ void run_mt(MtOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const engine::ValidationReport report = mt.validate();
     out["valid"] = report.ok();
-    out["validate_seconds"] = seconds_since(start);
+    out["validate_seconds"] = engine::seconds_since(start);
     if (!report.ok()) out["problems"] = report.problems;
   }
   print_report(std::cout, out, options.json);
@@ -91,11 +88,11 @@ engine::MtPreset require_mt_preset(const std::string& name) {
 BuiltMt build_mt_from(const std::string& spec, const engine::MeshLoadDef& load, const engine::MtBuildOptions& build) {
   auto start = std::chrono::steady_clock::now();
   const engine::LoadedMesh loaded = load_input_mesh(spec, load);
-  const double mesh_seconds = seconds_since(start);
+  const double mesh_seconds = engine::seconds_since(start);
   BuiltMt built;
   start = std::chrono::steady_clock::now();
   built.mt = engine::build_mt(loaded.mesh, build, &built.report);
-  built.build_seconds = seconds_since(start);
+  built.build_seconds = engine::seconds_since(start);
   built.mesh_seconds = mesh_seconds;
   return built;
 }

@@ -20,6 +20,7 @@
 #include "engine/input_error.h"
 #include "engine/mt/mt_builder.h"
 #include "engine/mt/mt_stats.h"
+#include "engine/stopwatch.h"
 #include "sim/scalpel_trace.h"
 #include "sim/world.h"
 
@@ -28,8 +29,6 @@ namespace {
 namespace fs = std::filesystem;
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void make_out_dir(const fs::path& dir) {
   std::error_code ec;
@@ -74,7 +73,7 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
   engine::Mt mt = build_organ_mt(scenario);
   RunRecord record;
   record.mt_stats = engine::compute_mt_stats(mt);
-  record.setup_seconds = seconds_since(setup_start);
+  record.setup_seconds = engine::seconds_since(setup_start);
   // Made once the inputs are known good: a bad mesh leaves no folder behind.
   const fs::path dir = options.out_dir.empty() ? fs::path(default_out_dir(scenario.file)) : fs::path(options.out_dir);
   make_out_dir(dir);
@@ -122,7 +121,7 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
     // The series ends with the last state, also when the run stopped early.
     if (every > 0 && snapshots.last_frame() != static_cast<std::int64_t>(world.frame())) snapshots.write(world);
   }
-  record.run_seconds = seconds_since(run_start);
+  record.run_seconds = engine::seconds_since(run_start);
   record.interrupted = interrupt.requested();
   record.rows = rows;
 

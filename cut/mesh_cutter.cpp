@@ -9,6 +9,7 @@
 
 #include "cut/tet_splitter.h"
 #include "cut/vertex_unpinch.h"
+#include "engine/stopwatch.h"
 #include "engine/tet_adjacency.h"
 #include "engine/tet_components.h"
 #include "engine/tet_geometry.h"
@@ -19,10 +20,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using engine::Tet;
 using engine::TetMesh;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 }  // namespace
 
@@ -172,7 +169,7 @@ MeshCutResult cut_once(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
     if (v.key.kind == PointKind::kVertexCopy) through.push_back(v.id);
   for (std::size_t t = n_tets; t < mesh.num_tets(); ++t) nearby.push_back(static_cast<std::uint32_t>(t));
   stats.unpinched_vertices = unpinch_vertices(mesh, through, nearby, result.new_vertices, result.relabeled_tets);
-  stats.split_seconds = seconds_since(split_start);
+  stats.split_seconds = engine::seconds_since(split_start);
 
   stats.split_tets = result.split_tets.size();
   stats.new_tets = made.size();
@@ -190,7 +187,7 @@ MeshCutResult cut_once(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
     stats.min_dihedral_deg = std::min(stats.min_dihedral_deg, worst);
     if (parent_quality[i] > 0) stats.min_dihedral_ratio = std::min(stats.min_dihedral_ratio, worst / parent_quality[i]);
   }
-  stats.seconds = seconds_since(start);
+  stats.seconds = engine::seconds_since(start);
   return result;
 }
 
@@ -287,7 +284,7 @@ MeshCutResult cut_mesh(TetMesh& mesh, const CutPolygon& polygon, const CutterDef
         attempt < 4 ? find_torn_edges(mesh, result, vertices_before) : std::vector<VertId>{};
     if (torn.empty()) {
       result.stats.vetoed_vertices += vetoes.size();
-      result.stats.seconds = seconds_since(start);
+      result.stats.seconds = engine::seconds_since(start);
       if (def.count_pieces) result.stats.pieces = count_pieces(mesh);
       return result;
     }

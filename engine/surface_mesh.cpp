@@ -24,6 +24,7 @@
 #include "engine/child_process.h"
 #include "engine/input_error.h"
 #include "engine/tet_adjacency.h"
+#include "engine/text.h"
 
 namespace mtcut::engine {
 namespace {
@@ -33,12 +34,6 @@ struct DoubleTraits : OpenMesh::DefaultTraits {
   using Normal = OpenMesh::Vec3d;
 };
 using OmMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 // OpenMesh prints its warnings (e.g. skipped complex faces) to omerr/omlog;
 // they are not ours to show, so keep them quiet while we use it.

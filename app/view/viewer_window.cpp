@@ -15,6 +15,7 @@
 
 #include "app/view/scene_renderer.h"
 #include "engine/input_error.h"
+#include "engine/stopwatch.h"
 
 namespace mtcut::app::view {
 namespace {
@@ -29,8 +30,6 @@ std::string& last_glfw_error() {
 void record_glfw_error(int /*code*/, const char* description) { last_glfw_error() = description; }
 
 ViewerWindow& owner(GLFWwindow* window) { return *static_cast<ViewerWindow*>(glfwGetWindowUserPointer(window)); }
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 GLFWwindow* open_window(int width, int height) {
   glfwSetErrorCallback(record_glfw_error);
@@ -150,7 +149,7 @@ double ViewerWindow::draw_frame(Image* capture) {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   if (capture) *capture = SceneRenderer::read_pixels(fb_w, fb_h);
   glfwSwapBuffers(window_);
-  const double ms = 1000.0 * seconds_since(start);
+  const double ms = 1000.0 * engine::seconds_since(start);
   status_.render_ms = ms;
   session_.timings().render.push(ms);
   return ms;
@@ -179,7 +178,7 @@ void ViewerWindow::run() {
       const int due = clock_.advance(elapsed);
       const auto physics_start = Clock::now();
       for (int i = 0; i < due; ++i) {
-        if (i > 0 && seconds_since(physics_start) > kPhysicsBudget) {
+        if (i > 0 && engine::seconds_since(physics_start) > kPhysicsBudget) {
           clock_.drop(due - i);
           break;
         }
@@ -194,7 +193,7 @@ void ViewerWindow::run() {
     if (requests_.clear_clock) clock_.clear();
     clock_.set_dt(session_.world().def().dt);
 
-    const double window_seconds = seconds_since(speed_window_start);
+    const double window_seconds = engine::seconds_since(speed_window_start);
     if (window_seconds >= 1.0) {
       status_.sim_speed = std::max(session_.world().time() - speed_window_sim_start, 0.0) / window_seconds;
       speed_window_start = Clock::now();

@@ -15,6 +15,7 @@
 #include "cut/tet_splitter.h"
 #include "engine/radix_sort.h"
 #include "engine/reserve_geometric.h"
+#include "engine/stopwatch.h"
 #include "engine/tet_geometry.h"
 
 namespace mtcut::cut {
@@ -23,8 +24,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using engine::FaceMask;
 using engine::kTetFaces;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 PointKey copy_key(VertId v) {
   PointKey key;
@@ -284,7 +283,7 @@ MtCut::MtCut(const Mt& mt, const TetBvh& bvh, const CutPolygon& polygon, std::sp
   if (pending_of.size() < mt.num_tets()) pending_of.resize(mt.num_tets(), -1);
   for (std::size_t i = 0; i < pending_.size(); ++i) pending_of[pending_[i].tet.index()] = static_cast<std::int32_t>(i);
   if (def.check_search && (def.search || def.grown_from || def.candidates)) check_search(mt, bvh, given, table);
-  find_seconds_ = seconds_since(start);
+  find_seconds_ = engine::seconds_since(start);
 }
 
 void MtCut::check_search(const Mt& mt, const TetBvh& bvh, std::span<const Vec3> geometry, SplitTable& table) const {
@@ -561,7 +560,7 @@ void MtCut::process(Mt& mt, TetBvh& bvh, std::size_t job, MtChangeReport& report
       ++report.counts.whole_fragments;
     }
   }
-  report.counts.dag_seconds += seconds_since(dag_start);
+  report.counts.dag_seconds += engine::seconds_since(dag_start);
   ++report.counts.jobs;
   report.processed.push_back(f);
   job_done_[job] = 1;

@@ -5,14 +5,10 @@
 #include <bit>
 #include <cstring>
 
+#include "engine/text.h"
+
 namespace mtcut::engine {
 namespace {
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 // The value's bytes in the machine's order.
 std::array<unsigned char, 8> native_bytes(const unsigned char* bytes, std::size_t size, bool big_endian) {
@@ -38,8 +34,6 @@ int base64_digit(char c) {
   if (c == '/') return 63;
   return -1;
 }
-
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
 
 }  // namespace
 

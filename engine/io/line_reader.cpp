@@ -8,11 +8,10 @@
 #include <system_error>
 
 #include "engine/input_error.h"
+#include "engine/text.h"
 
 namespace mtcut::engine {
 namespace {
-
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
 
 // from_chars takes no leading '+'; files written by Fortran or printf("%+g") have one.
 std::string_view drop_plus(std::string_view token) {

@@ -12,15 +12,10 @@
 
 #include "engine/input_error.h"
 #include "engine/io/mesh_readers.h"
+#include "engine/text.h"
 
 namespace mtcut::engine {
 namespace {
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 bool starts_with(const std::string& text, const char* prefix) { return text.rfind(prefix, 0) == 0; }
 

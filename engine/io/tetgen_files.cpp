@@ -15,6 +15,7 @@
 #include "engine/io/line_reader.h"
 #include "engine/io/mesh_file.h"
 #include "engine/io/mesh_readers.h"
+#include "engine/text.h"
 
 namespace mtcut::engine {
 namespace {
@@ -152,8 +153,7 @@ std::vector<std::array<std::int64_t, 4>> read_ele_file(const std::string& path, 
 // The base name shared by the pair: path without a .node or .ele ending.
 std::string tetgen_base(const std::string& path) {
   const std::filesystem::path p(path);
-  std::string ext = p.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lower_extension(path);
   if (ext == ".node" || ext == ".ele") return (p.parent_path() / p.stem()).string();
   return path;
 }

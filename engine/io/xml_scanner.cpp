@@ -8,10 +8,10 @@
 namespace mtcut::engine {
 namespace {
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool is_xml_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 bool is_name_char(char c) {
-  return !is_space(c) && c != '>' && c != '/' && c != '=' && c != '<' && c != '"' && c != '\'';
+  return !is_xml_space(c) && c != '>' && c != '/' && c != '=' && c != '<' && c != '"' && c != '\'';
 }
 
 // Replaces the five predefined entities and numeric character references
@@ -83,7 +83,7 @@ void XmlScanner::skip_past(std::string_view terminator, const char* construct) {
 }
 
 void XmlScanner::skip_space() {
-  while (pos_ < text_.size() && is_space(text_[pos_])) ++pos_;
+  while (pos_ < text_.size() && is_xml_space(text_[pos_])) ++pos_;
 }
 
 std::string XmlScanner::read_name() {

@@ -27,17 +27,17 @@ class SurfaceFiles : public ::testing::Test {
 using mtcut::test::input_error_of;
 
 TEST_F(SurfaceFiles, ReadsTheRealSurfaces) {
-  const SurfaceMesh liver = read_surface_file(test::shared_mesh("liver.obj"));
+  const SurfaceMesh liver = read_surface_file(mtcut::test::shared_mesh("liver.obj"));
   EXPECT_EQ(liver.positions.size(), 139u);  // the file lists 181, 42 of which no face uses
   EXPECT_EQ(liver.triangles.size(), 274u);
   EXPECT_EQ(liver.count_open_edges(), 0u);
   EXPECT_GT(std::abs(liver.enclosed_volume()), 0);
 
-  const SurfaceMesh liver2 = read_surface_file(test::shared_mesh("liver2.obj"));
+  const SurfaceMesh liver2 = read_surface_file(mtcut::test::shared_mesh("liver2.obj"));
   EXPECT_EQ(liver2.positions.size(), 1170u);
   EXPECT_EQ(liver2.count_open_edges(), 0u);
 
-  const SurfaceMesh torus = read_surface_file(test::shared_mesh("torus.obj"));
+  const SurfaceMesh torus = read_surface_file(mtcut::test::shared_mesh("torus.obj"));
   EXPECT_EQ(torus.positions.size(), 800u);
   EXPECT_EQ(torus.count_open_edges(), 0u);
 }

@@ -34,7 +34,7 @@ void expect_meshes(const SurfaceMesh& s, const std::string& what) {
 }
 
 TEST(SurfaceRepair, ACleanSurfaceIsLeftAsItIs) {
-  SurfaceMesh s = ellipsoid_surface(test::organ_size());
+  SurfaceMesh s = ellipsoid_surface(mtcut::test::organ_size());
   const SurfaceMesh before = s;
   const SurfaceRepair r = repair_surface(s, "organ.obj");
   EXPECT_FALSE(r.changed());
@@ -43,7 +43,7 @@ TEST(SurfaceRepair, ACleanSurfaceIsLeftAsItIs) {
 }
 
 TEST(SurfaceRepair, DuplicatePointsAndTurnedFacesAreMendedExactly) {
-  const SurfaceMesh clean = ellipsoid_surface(test::organ_size());
+  const SurfaceMesh clean = ellipsoid_surface(mtcut::test::organ_size());
   SurfaceMesh soup;  // every triangle with its own points, every third one turned
   for (std::size_t t = 0; t < clean.triangles.size(); ++t) {
     const auto first = static_cast<std::int32_t>(soup.positions.size());
@@ -67,8 +67,8 @@ TEST(SurfaceRepair, DuplicatePointsAndTurnedFacesAreMendedExactly) {
 }
 
 TEST(SurfaceRepair, HolesAreClosed) {
-  const double volume = ellipsoid_surface(test::organ_size()).enclosed_volume();
-  SurfaceMesh s = test::holed_organ();
+  const double volume = ellipsoid_surface(mtcut::test::organ_size()).enclosed_volume();
+  SurfaceMesh s = mtcut::test::holed_organ();
   const SurfaceRepair r = repair_surface(s, "holey.obj");
   EXPECT_EQ(r.step, SurfaceRepair::Step::kHoles);
   EXPECT_GE(r.holes_closed, 2u);
@@ -79,8 +79,8 @@ TEST(SurfaceRepair, HolesAreClosed) {
 }
 
 TEST(SurfaceRepair, OverlappingPartsBecomeTheirUnion) {
-  const double part = ellipsoid_surface(test::organ_size()).enclosed_volume();
-  SurfaceMesh s = test::crossing_organs();
+  const double part = ellipsoid_surface(mtcut::test::organ_size()).enclosed_volume();
+  SurfaceMesh s = mtcut::test::crossing_organs();
   const SurfaceRepair r = repair_surface(s, "two.obj");
   EXPECT_EQ(r.step, SurfaceRepair::Step::kSelfIntersections);
   const double union_volume = s.enclosed_volume();
@@ -115,7 +115,7 @@ TEST(SurfaceRepair, AnOpenSheetCannotBeMadeASolid) {
 }
 
 TEST(SurfaceRepair, AWrapIsWatertightNearTheInputAndSaysHowNear) {
-  SurfaceMesh s = ellipsoid_surface(test::organ_size());
+  SurfaceMesh s = ellipsoid_surface(mtcut::test::organ_size());
   const double volume = s.enclosed_volume();
   const SurfaceRepair r = repair_surface(s, "organ.obj", true);
   EXPECT_EQ(r.step, SurfaceRepair::Step::kWrap);
@@ -131,7 +131,7 @@ TEST(SurfaceRepair, AWrapIsWatertightNearTheInputAndSaysHowNear) {
 TEST(SurfaceRepair, LoadMeshRepairsUnlessStrict) {
   mtcut::test::TempDir dir;
   const std::string path = dir.file("two.obj");
-  write_surface_file(test::crossing_organs(), path);
+  write_surface_file(mtcut::test::crossing_organs(), path);
   const LoadedMesh loaded = load_mesh(path, {});
   EXPECT_TRUE(loaded.mesh.validate().ok());
   ASSERT_EQ(loaded.notes.size(), 1u);

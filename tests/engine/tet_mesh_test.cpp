@@ -178,7 +178,7 @@ TEST(TetMesh, ValidateNamesNonManifoldBoundary) {
 // and volume.
 TEST(TetMesh, PinchedVerticesAreSplitSoPartsOnlyTouchingComeApart) {
   for (const int z_step : {0, 1}) {
-    const RawMesh raw = test::touching_cubes(0.05, z_step);
+    const RawMesh raw = mtcut::test::touching_cubes(0.05, z_step);
     TetMesh mesh = make_tet_mesh(raw.positions, raw.tets, "cubes");
     if (z_step == 0) {
       EXPECT_FALSE(mesh.validate().ok());  // an edge on four boundary faces

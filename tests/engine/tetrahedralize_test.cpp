@@ -21,7 +21,7 @@ SurfaceMesh unit_box() { return make_builtin_surface(BuiltinShapeDef{BuiltinShap
 
 TEST(Tetrahedralize, RealSurfacesGiveValidMeshesOfTheSameVolume) {
   for (const std::string name : {"liver.obj", "liver2.obj", "torus.obj"}) {
-    const SurfaceMesh surface = read_surface_file(test::shared_mesh(name));
+    const SurfaceMesh surface = read_surface_file(mtcut::test::shared_mesh(name));
     const TetMesh mesh = tetrahedralize(surface, {}, name);
     const auto report = mesh.validate();
     EXPECT_TRUE(report.ok()) << name << ": " << report.summary();
@@ -45,7 +45,7 @@ TEST(Tetrahedralize, QualityRaisesTheSmallestAngle) {
   TetrahedralizeOptions rough;
   rough.radius_edge_ratio = 0;
   rough.max_volume = 0;
-  const SurfaceMesh liver = read_surface_file(test::shared_mesh("liver2.obj"));
+  const SurfaceMesh liver = read_surface_file(mtcut::test::shared_mesh("liver2.obj"));
   TetrahedralizeOptions good;
   good.min_dihedral_deg = 12;
   EXPECT_GT(compute_stats(tetrahedralize(liver, good, "liver2")).min_dihedral_deg,
@@ -127,7 +127,7 @@ TEST(Tetrahedralize, RefinementStopsAtItsBoundOfAddedPointsAndSaysSo) {
   EXPECT_EQ(notes[0].hint.kind, InputHint::Kind::kNone);
   // Within the bound, no note.
   notes.clear();
-  (void)tetrahedralize(read_surface_file(test::shared_mesh("liver2.obj")), {}, "liver2.obj", &notes);
+  (void)tetrahedralize(read_surface_file(mtcut::test::shared_mesh("liver2.obj")), {}, "liver2.obj", &notes);
   EXPECT_TRUE(notes.empty());
 }
 
@@ -135,13 +135,13 @@ TEST(Tetrahedralize, AMeshingOverItsTimeLimitIsStoppedAndRefused) {
   TetrahedralizeOptions options;
   options.time_limit_seconds = 1e-6;
   const std::string m =
-      input_error_of([&] { tetrahedralize(read_surface_file(test::shared_mesh("liver2.obj")), options, "liver2.obj"); });
+      input_error_of([&] { tetrahedralize(read_surface_file(mtcut::test::shared_mesh("liver2.obj")), options, "liver2.obj"); });
   EXPECT_NE(m.find("liver2.obj: TetGen did not finish"), std::string::npos) << m;
 }
 
 TEST(MeshLoader, LoadsEveryGoodSharedMeshAndRejectsTheBrokenOnes) {
   MeshLoadDef def;
-  for (const auto& entry : std::filesystem::directory_iterator(test::shared_mesh(""))) {
+  for (const auto& entry : std::filesystem::directory_iterator(mtcut::test::shared_mesh(""))) {
     const std::string path = entry.path().string();
     const std::string name = entry.path().filename().string();
     if (name == "README.md") continue;

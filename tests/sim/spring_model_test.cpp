@@ -12,20 +12,16 @@
 #include "engine/tet_adjacency.h"
 #include "engine/tet_geometry.h"
 #include "sim/fixed_region.h"
+#include "tests/sim/test_box.h"
 #include "tests/test_paths.h"
 
 namespace mtcut::sim {
 namespace {
 
-engine::TetMesh box_mesh(int tets, const Vec3& size) {
-  engine::MeshLoadDef def;
-  def.builtin_tets = tets;
-  def.builtin_size = size;
-  return engine::load_mesh("builtin:box", def).mesh;
-}
+using test::box_mesh;
 
 TEST(SpringModel, OneSpringPerEdgeAndExactMass) {
-  const engine::TetMesh mesh = engine::load_mesh(test::shared_mesh("liver.msh"), {}).mesh;
+  const engine::TetMesh mesh = engine::load_mesh(mtcut::test::shared_mesh("liver.msh"), {}).mesh;
   MaterialDef material;
   const SpringModel model = build_spring_model(mesh.tets, mesh.positions, material);
   const auto report = model.validate();
@@ -78,7 +74,7 @@ TEST(SpringModel, SpringsAreSortedByFirstThenSecondParticle) {
 // by |e|^2 / (kShortEdgeFloor L_T)^2 for an edge below the floor, which
 // this liver has none of: AShortEdgeCountsAsTheFloorInVanGelder).
 TEST(SpringModel, SpringsMatchAReferenceOnTheLiverAndItsSubsets) {
-  const engine::TetMesh mesh = engine::load_mesh(test::shared_mesh("liver.msh"), {}).mesh;
+  const engine::TetMesh mesh = engine::load_mesh(mtcut::test::shared_mesh("liver.msh"), {}).mesh;
   MaterialDef material;
   material.youngs_modulus = 4321;
   std::mt19937 rng(17);

@@ -56,7 +56,7 @@ std::vector<engine::Tet> split_at_centroid(const engine::Tet& t, std::vector<Vec
 class SpringModelUpdateOnMesh : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SpringModelUpdateOnMesh, GivesTheBuildsBitsOverRandomChanges) {
-  const engine::TetMesh mesh = engine::load_mesh(test::shared_mesh(GetParam()), {}).mesh;
+  const engine::TetMesh mesh = engine::load_mesh(mtcut::test::shared_mesh(GetParam()), {}).mesh;
   engine::Aabb box;
   for (const Vec3& p : mesh.positions) box.extend(p);
   const double diagonal = (box.hi - box.lo).norm();

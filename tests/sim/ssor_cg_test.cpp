@@ -16,7 +16,7 @@
 namespace mtcut::sim {
 namespace {
 
-constexpr double kDt = 1.0 / 60.0;
+using test::kDt;
 
 double dot(const std::vector<Vec3>& u, const std::vector<Vec3>& w) {
   double sum = 0;

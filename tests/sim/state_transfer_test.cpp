@@ -142,7 +142,7 @@ std::string mesh_name(const ::testing::TestParamInfo<std::string>& param) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, TransferOnMeshes,
-                         ::testing::Values(std::string("builtin:ellipsoid"), test::shared_mesh("liver.msh")),
+                         ::testing::Values(std::string("builtin:ellipsoid"), mtcut::test::shared_mesh("liver.msh")),
                          mesh_name);
 
 TEST(StateTransfer, CutVerticesComeFromTheirParents) {

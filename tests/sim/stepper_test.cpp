@@ -18,14 +18,8 @@
 namespace mtcut::sim {
 namespace {
 
-constexpr double kDt = 1.0 / 60.0;
-
-engine::TetMesh box_mesh(int tets, const Vec3& size) {
-  engine::MeshLoadDef def;
-  def.builtin_tets = tets;
-  def.builtin_size = size;
-  return engine::load_mesh("builtin:box", def).mesh;
-}
+using test::box_mesh;
+using test::kDt;
 
 MaterialDef stiff_material() {
   MaterialDef m;

@@ -2,7 +2,8 @@
 // The small spring model the solver tests share: a 0.1 x 0.05 x 0.05 box of
 // about 400 tets, stiff and damped, with its x = +0.05 face fixed; a
 // shuffle of its springs (an order not grouped by first particle); and a
-// jittered, moving state with its implicit system.
+// jittered, moving state with its implicit system; the frame step and the
+// built-in box the solver tests build their own models on.
 
 #include <algorithm>
 #include <numeric>
@@ -18,6 +19,17 @@
 #include "sim/spring_system.h"
 
 namespace mtcut::sim::test {
+
+// One frame at 60 Hz, the step the solver tests take.
+inline constexpr double kDt = 1.0 / 60.0;
+
+// The built-in box of about `tets` tets and the given size.
+inline engine::TetMesh box_mesh(int tets, const Vec3& size) {
+  engine::MeshLoadDef def;
+  def.builtin_tets = tets;
+  def.builtin_size = size;
+  return engine::load_mesh("builtin:box", def).mesh;
+}
 
 inline SpringModel fixed_test_box(double volume_stiffness = 0) {
   engine::MeshLoadDef def;

@@ -103,8 +103,8 @@ void run_sequence(const std::string& name, int cuts, std::uint64_t seed) {
   ::testing::Test::RecordProperty("whole_fragments", static_cast<int>(whole));
 }
 
-TEST(MtCut, RandomSequenceEllipsoid) { run_sequence("ellipsoid", test::scaled(24), 11); }
-TEST(MtCut, RandomSequenceLiver) { run_sequence("liver", test::scaled(24), 12); }
+TEST(MtCut, RandomSequenceEllipsoid) { run_sequence("ellipsoid", mtcut::test::scaled(24), 11); }
+TEST(MtCut, RandomSequenceLiver) { run_sequence("liver", mtcut::test::scaled(24), 12); }
 TEST(MtCut, RandomSequencePaperPreset) { run_sequence("paper", 6, 13); }
 
 TEST(MtCut, OrderOfFragmentsDoesNotMatter) {

@@ -291,7 +291,7 @@ std::string repaired_surface(const std::string& name) {
 // failure).
 int stroke_count() {
   const char* env = std::getenv("MTCUT_STROKES");
-  return env ? std::max(1, std::atoi(env)) : test::scaled(200);
+  return env ? std::max(1, std::atoi(env)) : mtcut::test::scaled(200);
 }
 
 // Random strokes: 1 to 3 straight legs in random directions across the

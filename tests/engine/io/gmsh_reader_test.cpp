@@ -23,8 +23,6 @@ std::string cube_node_line(int i, bool with_tag = true) {
   return line + std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + " " + std::to_string((i >> 2) & 1) + "\n";
 }
 
-const int kKuhn[6][4] = {{0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}};
-
 std::string tags_of(const int* corners, int n) {
   std::string s;
   for (int k = 0; k < n; ++k) s += " " + std::to_string(10 * (corners[k] + 1));
@@ -42,7 +40,7 @@ std::string msh2_cube() {
   s += "2 1 2 0 1 10 20\n";
   const int tri[2][3] = {{0, 1, 3}, {0, 3, 2}};
   for (int t = 0; t < 2; ++t) s += std::to_string(3 + t) + " 2 2 0 1" + tags_of(tri[t], 3) + "\n";
-  for (int t = 0; t < 6; ++t) s += std::to_string(5 + t) + " 4 2 1 1" + tags_of(kKuhn[t], 4) + "\n";
+  for (int t = 0; t < 6; ++t) s += std::to_string(5 + t) + " 4 2 1 1" + tags_of(test::kKuhnTets[t], 4) + "\n";
   return s + "$EndElements\n$NodeData\n1\n\"T\"\n$EndNodeData\n";
 }
 
@@ -61,7 +59,7 @@ std::string msh41_cube() {
   s += "0 1 15 1\n1 10\n";
   s += "2 1 2 2\n2 10 20 40\n3 10 40 30\n";
   s += "3 1 4 6\n";
-  for (int t = 0; t < 6; ++t) s += std::to_string(4 + t) + tags_of(kKuhn[t], 4) + "\n";
+  for (int t = 0; t < 6; ++t) s += std::to_string(4 + t) + tags_of(test::kKuhnTets[t], 4) + "\n";
   return s + "$EndElements\n";
 }
 
@@ -71,17 +69,17 @@ std::string msh40_cube() {
   s += "$Nodes\n1 8\n1 3 0 8\n";
   for (int i = 7; i >= 0; --i) s += cube_node_line(i);
   s += "$EndNodes\n$Elements\n2 7\n1 2 2 1\n1 10 20 40\n1 3 4 6\n";
-  for (int t = 0; t < 6; ++t) s += std::to_string(2 + t) + tags_of(kKuhn[t], 4) + "\n";
+  for (int t = 0; t < 6; ++t) s += std::to_string(2 + t) + tags_of(test::kKuhnTets[t], 4) + "\n";
   return s + "$EndElements\n";
 }
 
 // Node i of the cube was written (7 - i)-th, so its id is 7 - i.
-void expect_cube(const RawMesh& raw, std::size_t triangles) {
+void expect_gmsh_cube(const RawMesh& raw, std::size_t triangles) {
   ASSERT_EQ(raw.positions.size(), 8u);
   for (int i = 0; i < 8; ++i) EXPECT_EQ(raw.positions[static_cast<std::size_t>(7 - i)], Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
   ASSERT_EQ(raw.tets.size(), 6u);
   for (int t = 0; t < 6; ++t)
-    for (int k = 0; k < 4; ++k) EXPECT_EQ(raw.tets[static_cast<std::size_t>(t)][static_cast<std::size_t>(k)], 7 - kKuhn[t][k]);
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(raw.tets[static_cast<std::size_t>(t)][static_cast<std::size_t>(k)], 7 - test::kKuhnTets[t][k]);
   EXPECT_EQ(raw.triangles.size(), triangles);
   const TetMesh mesh = test::expect_valid_tets(raw, "cube");
   EXPECT_NEAR(mesh.total_volume(), 1.0, 1e-15);
@@ -98,18 +96,18 @@ TEST(GmshReader, ReadsRealLiverInFormat1) {
 TEST(GmshReader, ReadsFormat2WithTagsInAnyOrder) {
   TempDir dir;
   const RawMesh raw = read_volume_file(dir.write("cube2.msh", msh2_cube()));
-  expect_cube(raw, 2);
+  expect_gmsh_cube(raw, 2);
   EXPECT_EQ(raw.triangles[0], (std::array<std::int64_t, 3>{7, 6, 4}));
 }
 
 TEST(GmshReader, ReadsFormat41WithEntityBlocks) {
   TempDir dir;
-  expect_cube(read_volume_file(dir.write("cube41.msh", msh41_cube())), 2);
+  expect_gmsh_cube(read_volume_file(dir.write("cube41.msh", msh41_cube())), 2);
 }
 
 TEST(GmshReader, ReadsFormat40) {
   TempDir dir;
-  expect_cube(read_volume_file(dir.write("cube40.msh", msh40_cube())), 1);
+  expect_gmsh_cube(read_volume_file(dir.write("cube40.msh", msh40_cube())), 1);
 }
 
 TEST(GmshReader, KeepsTheCornersOfQuadraticElements) {
@@ -144,7 +142,7 @@ TEST(GmshReader, ReadsWindowsLineEnds) {
   TempDir dir;
   std::string text;
   for (char c : msh2_cube()) text += c == '\n' ? std::string("\r\n") : std::string(1, c);
-  expect_cube(read_volume_file(dir.write("crlf.msh", text)), 2);
+  expect_gmsh_cube(read_volume_file(dir.write("crlf.msh", text)), 2);
 }
 
 TEST(GmshReader, RejectsBrokenFormat2Files) {

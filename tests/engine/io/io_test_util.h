@@ -82,12 +82,16 @@ inline std::string replace_once(std::string text, const std::string& from, const
   return text;
 }
 
-// A unit cube split into 6 positive tets around the diagonal 0-7.
+// The 6 positive tets of the unit cube around its diagonal 0-7 (corner i at
+// (i & 1, (i >> 1) & 1, (i >> 2) & 1)).
+inline constexpr int kKuhnTets[6][4] = {{0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}};
+
+// The unit cube made of kKuhnTets.
 inline TetMesh kuhn_cube() {
   std::vector<Vec3> p;
   for (int i = 0; i < 8; ++i) p.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
-  const std::vector<std::array<std::int64_t, 4>> tets = {
-      {0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}};
+  std::vector<std::array<std::int64_t, 4>> tets;
+  for (const auto& t : kKuhnTets) tets.push_back({t[0], t[1], t[2], t[3]});
   return make_tet_mesh(p, tets, "cube");
 }
 

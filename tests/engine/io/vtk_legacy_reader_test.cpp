@@ -23,8 +23,6 @@ using test::expect_read_error;
 using test::replace_once;
 using test::TempDir;
 
-const int kKuhn[6][4] = {{0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}};
-
 // Appends value in big-endian byte order.
 template <class T>
 void put_be(std::string& out, T value) {
@@ -42,7 +40,7 @@ std::string ascii_grid() {
   s += "POINTS 8 double\n";
   for (int i = 0; i < 8; ++i) s += std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + " " + std::to_string((i >> 2) & 1) + "\n";
   s += "CELLS 9 39\n";
-  for (const auto& t : kKuhn) s += "4 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + " " + std::to_string(t[3]) + "\n";
+  for (const auto& t : test::kKuhnTets) s += "4 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + " " + std::to_string(t[3]) + "\n";
   s += "3 0 1 3\n2 0 1\n1 7\n";
   s += "CELL_TYPES 9\n10\n10\n10\n10\n10\n10\n5\n3\n1\n";
   s += "POINT_DATA 8\nSCALARS t float 1\nLOOKUP_TABLE default\n0 1 2 3 4 5 6 7\n";
@@ -62,7 +60,7 @@ std::string binary_grid(bool doubles) {
       else put_be(s, static_cast<float>(c));
     }
   s += "\nCELLS 7 34\n";
-  for (const auto& t : kKuhn) {
+  for (const auto& t : test::kKuhnTets) {
     put_be<std::int32_t>(s, 4);
     for (int k = 0; k < 4; ++k) put_be<std::int32_t>(s, t[k]);
   }
@@ -92,7 +90,7 @@ std::string grid51(bool binary) {
     else s += std::to_string(4 * c) + " ";
   }
   s += "\nCONNECTIVITY vtktypeint64\n";
-  for (const auto& t : kKuhn)
+  for (const auto& t : test::kKuhnTets)
     for (int k = 0; k < 4; ++k) {
       if (binary) put_be<std::int64_t>(s, t[k]);
       else s += std::to_string(t[k]) + " ";
@@ -105,7 +103,7 @@ std::string grid51(bool binary) {
   return s + "\n";
 }
 
-void expect_cube(const RawMesh& raw, std::size_t triangles) {
+void expect_vtk_cube(const RawMesh& raw, std::size_t triangles) {
   ASSERT_EQ(raw.positions.size(), 8u);
   for (int i = 0; i < 8; ++i)
     EXPECT_EQ(raw.positions[static_cast<std::size_t>(i)], Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
@@ -132,25 +130,25 @@ TEST(VtkLegacyReader, RejectsRealBrokenLiver) {
 
 TEST(VtkLegacyReader, ReadsAsciiUnstructuredGridSkippingOtherCellsAndData) {
   TempDir dir;
-  expect_cube(read_volume_file(dir.write("cube.vtk", ascii_grid())), 1);
+  expect_vtk_cube(read_volume_file(dir.write("cube.vtk", ascii_grid())), 1);
 }
 
 TEST(VtkLegacyReader, ReadsBinaryUnstructuredGridWithFloatAndDoublePoints) {
   TempDir dir;
-  expect_cube(read_volume_file(dir.write("f.vtk", binary_grid(false))), 1);
-  expect_cube(read_volume_file(dir.write("d.vtk", binary_grid(true))), 1);
+  expect_vtk_cube(read_volume_file(dir.write("f.vtk", binary_grid(false))), 1);
+  expect_vtk_cube(read_volume_file(dir.write("d.vtk", binary_grid(true))), 1);
 }
 
 TEST(VtkLegacyReader, ReadsVersion51OffsetsAndConnectivity) {
   TempDir dir;
-  expect_cube(read_volume_file(dir.write("a51.vtk", grid51(false))), 0);
-  expect_cube(read_volume_file(dir.write("b51.vtk", grid51(true))), 0);
+  expect_vtk_cube(read_volume_file(dir.write("a51.vtk", grid51(false))), 0);
+  expect_vtk_cube(read_volume_file(dir.write("b51.vtk", grid51(true))), 0);
 }
 
 TEST(VtkLegacyReader, ReadsVersion51FilesWrittenByMeshio) {
   for (const char* name : {"cube_meshio_ascii.vtk", "cube_meshio_binary.vtk"}) {
     SCOPED_TRACE(name);
-    expect_cube(read_volume_file(test::io_data(name)), 0);
+    expect_vtk_cube(read_volume_file(test::io_data(name)), 0);
   }
 }
 

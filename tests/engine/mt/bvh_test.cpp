@@ -10,7 +10,7 @@
 namespace mtcut::engine {
 namespace {
 
-using test::random_box;
+using mtcut::test::random_box;
 
 TEST(Bvh, DistancesBoundEveryPointOfTheBox) {
   std::mt19937 rng(1);

@@ -13,7 +13,7 @@
 namespace mtcut::engine {
 namespace {
 
-using test::test_mesh;
+using mtcut::test::test_mesh;
 
 // Lk(x) as sets of sorted simplices over vertex ids, the surface closed by
 // the dummy vertex -1: straight from the definition, for comparison.

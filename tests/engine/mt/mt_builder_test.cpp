@@ -16,7 +16,7 @@
 namespace mtcut::engine {
 namespace {
 
-using test::test_mesh;
+using mtcut::test::test_mesh;
 
 // Connected components of a set of tets, adjacency through shared faces.
 int face_components(const Mt& mt, std::span<const TetId> tets) {

@@ -10,7 +10,7 @@
 namespace mtcut::engine {
 namespace {
 
-using test::test_mt;
+using mtcut::test::test_mt;
 
 // One fine tet, which the drain replaces: every figure known by hand.
 TEST(MtStats, OneTetMtHasTheFiguresCountedByHand) {

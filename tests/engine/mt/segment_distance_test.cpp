@@ -9,7 +9,7 @@
 namespace mtcut::engine {
 namespace {
 
-using test::random_box;
+using mtcut::test::random_box;
 
 Segment random_segment(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-2.0, 2.0);

@@ -10,9 +10,9 @@
 namespace mtcut::engine {
 namespace {
 
-using test::sorted_tets;
-using test::test_mesh;
-using test::test_mt;
+using mtcut::test::sorted_tets;
+using mtcut::test::test_mesh;
+using mtcut::test::test_mt;
 
 // The box around the MT's vertices.
 Aabb mt_box(const Mt& mt) {

@@ -19,7 +19,7 @@
 namespace mtcut::engine {
 namespace {
 
-using test::test_mesh;
+using mtcut::test::test_mesh;
 
 Mt build(const std::string& mesh, double max_surface_deviation) {
   MtBuildOptions options;
@@ -82,7 +82,7 @@ TEST(SurfaceDeviation, AFinelyMeshedOrgansCoarsestLevelIsSmallWithinOnePercent) 
   ellipsoid.builtin_tets = 8000;
   const std::vector<std::pair<std::string, TetMesh>> organs = {
       {"ellipsoid", load_mesh("builtin:ellipsoid", ellipsoid).mesh},
-      {"liver2", load_mesh(test::shared_mesh("liver2.obj"), liver).mesh}};
+      {"liver2", load_mesh(mtcut::test::shared_mesh("liver2.obj"), liver).mesh}};
   for (const auto& [name, mesh] : organs) {
     MtBuildOptions bounded, kept;
     bounded.preserve_boundary = false;
@@ -108,8 +108,8 @@ TEST(SurfaceDeviation, MeasuresHowFarTheCoarsestSurfaceMoved) {
     // Sampled at corners, edge midpoints and centroids of triangles no
     // larger than the organ: within the organ's size.
     EXPECT_LT(measured, diagonal(test_mesh(mesh))) << mesh;
-    EXPECT_EQ(coarsest_surface_deviation(test::test_mt(mesh, true)), 0.0) << mesh;
-    EXPECT_EQ(compute_mt_stats(test::test_mt(mesh, true)).coarsest_surface_deviation, 0.0) << mesh;
+    EXPECT_EQ(coarsest_surface_deviation(mtcut::test::test_mt(mesh, true)), 0.0) << mesh;
+    EXPECT_EQ(compute_mt_stats(mtcut::test::test_mt(mesh, true)).coarsest_surface_deviation, 0.0) << mesh;
   }
 }
 

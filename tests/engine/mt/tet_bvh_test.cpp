@@ -12,7 +12,7 @@
 namespace mtcut::engine {
 namespace {
 
-using test::test_mt;
+using mtcut::test::test_mt;
 
 std::vector<TetId> brute_force_containing(const Mt& mt, const Vec3& p) {
   std::vector<TetId> out;
