@@ -11,6 +11,7 @@
 #include "engine/input_error.h"
 #include "engine/mesh_loader.h"
 #include "engine/quantiles.h"
+#include "engine/stopwatch.h"
 
 namespace mtcut::app {
 namespace {
@@ -104,7 +105,7 @@ nlohmann::ordered_json run_cut_bench(const CutBenchDef& def) {
           cutter.count_pieces = run == 0;  // an adjacency build: not part of the timed cut
           const auto start = std::chrono::steady_clock::now();
           const cut::MeshCutResult r = cut::cut_mesh(copy, m.cuts[c], cutter, &tables[s]);
-          seconds[s] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          seconds[s] += engine::seconds_since(start);
           split_seconds[s] += r.stats.split_seconds;
           split[s] += r.stats.split_tets;
           if (run == 0) {

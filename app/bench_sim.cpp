@@ -12,6 +12,7 @@
 #include "engine/mesh_loader.h"
 #include "engine/mt/bvh.h"
 #include "engine/quantiles.h"
+#include "engine/stopwatch.h"
 #include "sim/fixed_region.h"
 #include "sim/forces.h"
 #include "sim/spring_model_update.h"
@@ -102,7 +103,7 @@ nlohmann::ordered_json implicit_frame_parts(const sim::SpringModel& model, const
   const auto timed = [](const auto& work) {
     const auto start = Clock::now();
     work();
-    return std::chrono::duration<double>(Clock::now() - start).count();
+    return engine::seconds_since(start);
   };
   // The solve from 0 with a fixed iteration count (tolerance 0: no early
   // stop; infinite: stops before the first iteration, with no check).
@@ -237,7 +238,7 @@ nlohmann::ordered_json run_sim_bench(const SimBenchDef& def) {
         const auto start = std::chrono::steady_clock::now();
         cg_iterations += implicit_stepper.step(model, env, implicit_def, implicit_state, 1.0 / 60.0).cg_iterations;
         if (s == 0)
-          first_frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+          first_frame_seconds.push_back(engine::seconds_since(start));
         if (s == std::min(60, def.frames) - 1 && parts_state.x.empty()) parts_state = implicit_state;
       }
       implicit_refused += implicit_stepper.refused_steps();

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "engine/stopwatch.h"
+
 namespace mtcut::app {
 
 struct BatchTiming {
@@ -21,7 +23,7 @@ struct BatchTiming {
 inline double time_once(const std::function<void()>& batch) {
   const auto start = std::chrono::steady_clock::now();
   batch();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return engine::seconds_since(start);
 }
 
 // Median, min and max of one timing per batch.

@@ -1,7 +1,6 @@
 #include "app/mesh_command.h"
 
 #include <chrono>
-#include <filesystem>
 #include <iostream>
 
 #include "app/cli_checks.h"
@@ -10,6 +9,7 @@
 #include "engine/input_error.h"
 #include "engine/io/mesh_file.h"
 #include "engine/mesh_loader.h"
+#include "engine/stopwatch.h"
 #include "engine/surface_mesh.h"
 #include "engine/text.h"
 
@@ -28,7 +28,7 @@ void run_mesh(MeshOptions& options) {
   apply_mesh_input_options(options.mesh_input, options.load);
   const auto start = std::chrono::steady_clock::now();
   const engine::LoadedMesh loaded = load_input_mesh(options.input, options.load);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = engine::seconds_since(start);
   if (!options.output.empty()) write_mesh_output(loaded.mesh, options.output);
 
   nlohmann::ordered_json out = {{"input", options.input}, {"source", loaded.kind}};

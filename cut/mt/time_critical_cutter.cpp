@@ -2,6 +2,7 @@
 
 #include "cut/mt/cut_guard.h"
 #include "engine/input_error.h"
+#include "engine/stopwatch.h"
 #include "engine/tet_geometry.h"
 
 #include <algorithm>
@@ -460,7 +461,7 @@ TimeCriticalCutter::RunResult TimeCriticalCutter::run(Mt& mt, TetBvh& bvh, const
     }
   }
   totals_.total_jobs_done += jobs;
-  totals_.seconds += std::chrono::duration<double>(Clock::now() - start).count();
+  totals_.seconds += engine::seconds_since(start);
   return result;
 }
 

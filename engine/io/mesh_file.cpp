@@ -3,7 +3,6 @@
 
 #include "engine/io/mesh_file.h"
 
-#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -66,7 +65,7 @@ MeshFormat format_of_content(const std::string& path) {
   if (is_binary_stl(path, head)) return MeshFormat::kStl;
   std::size_t start = 0;
   if (starts_with(head, "\xEF\xBB\xBF")) start = 3;  // a UTF-8 byte-order mark
-  while (start < head.size() && std::isspace(static_cast<unsigned char>(head[start]))) ++start;
+  while (start < head.size() && is_space(head[start])) ++start;
   const std::string text = head.substr(start);
   if (starts_with(text, "<?xml") || starts_with(text, "<VTKFile")) return MeshFormat::kVtkXml;
   if (starts_with(text, "# vtk DataFile")) return MeshFormat::kVtkLegacy;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/mt/bvh.h"
+#include "engine/stopwatch.h"
 
 namespace mtcut::engine {
 namespace {
@@ -181,7 +182,7 @@ Mt build_mt(const TetMesh& fine, const MtBuildOptions& options, MtBuildReport* r
     report->rounds = builder.rounds();
     report->collapses = builder.collapses();
     report->rejections = builder.mesh().rejections();
-    report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report->seconds = seconds_since(start);
   }
   return mt;
 }
