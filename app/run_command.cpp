@@ -51,6 +51,15 @@ engine::Mt build_organ_mt(const ScenarioDef& scenario) {
   return engine::build_mt(loaded.mesh, scenario.world.mt);
 }
 
+std::unique_ptr<sim::World> start_organ_world(const ScenarioDef& scenario, engine::Mt mt, const sim::WorldDef& def,
+                                              const std::optional<sim::ScalpelPose>& blade) {
+  try {
+    return std::make_unique<sim::World>(std::move(mt), def, blade);
+  } catch (const engine::InputError& e) {
+    throw engine::InputError(scenario.mesh + ": " + e.what(), e.hint());
+  }
+}
+
 std::string default_scenario_path() { return config_dir() + "/scenarios/default.toml"; }
 
 std::string default_out_dir(const std::string& scenario_path) {
@@ -80,7 +89,8 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
 
   // The blade's first pose, known now for a scripted path and a replay (not a live device).
   const std::optional<sim::ScalpelPose> blade = hid ? hid->start_pose() : scenario.scalpel.pose_at(0.0);
-  sim::World world(std::move(mt), scenario.world, blade);
+  const std::unique_ptr<sim::World> started = start_organ_world(scenario, std::move(mt), scenario.world, blade);
+  sim::World& world = *started;
   if (hid) hid->start();  // last: a live input's clock starts with the World's time at 0
   const int frames = options.frames_override > 0 ? options.frames_override : scenario.frames;
   record.frames_requested = frames;

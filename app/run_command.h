@@ -5,12 +5,15 @@
 // collection, and the final deformed surface (surface.obj).
 
 #include <CLI/CLI.hpp>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "app/run_hid.h"
 #include "app/scenario.h"
 #include "engine/mt/mt.h"
+#include "sim/world.h"
 
 namespace mtcut::app {
 
@@ -35,6 +38,12 @@ RunResult run_scenario(const ScenarioDef& scenario, const RunOptions& options);
 // The organ's MT, built from the scenario's mesh (`mtcut run` and `mtcut
 // view`). Throws InputError for a bad or invalid mesh.
 engine::Mt build_organ_mt(const ScenarioDef& scenario);
+
+// The World on the scenario's organ `mt` (`mtcut run` and `mtcut view`). An
+// InputError the World raises about the organ (a body beyond what the spring
+// model holds) is said of the scenario's mesh, as the loader's errors are.
+std::unique_ptr<sim::World> start_organ_world(const ScenarioDef& scenario, engine::Mt mt, const sim::WorldDef& def,
+                                              const std::optional<sim::ScalpelPose>& blade);
 
 // The scenario `mtcut run` plays without one: <config dir>/scenarios/default.toml.
 std::string default_scenario_path();

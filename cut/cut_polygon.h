@@ -141,9 +141,9 @@ std::vector<CutPolygon> sweep_blade(const Vec3& a0, const Vec3& b0, const Vec3& 
 // stroke are collinear only up to rounding.
 std::vector<Eigen::Vector2d> convex_hull_2d(std::vector<Eigen::Vector2d> points, double eps);
 
-// Parses "x,y,z;x,y,z;..." into a polygon (the `--polygon` option). Throws
-// engine::InputError naming `source` and the offending corner.
-CutPolygon parse_cut_polygon(const std::string& text, const std::string& source = "--polygon",
-                             const CutPolygonDef& def = {});
+// Parses "x,y,z;x,y,z;..." into a polygon. Throws engine::InputError naming
+// `source` (where the text came from: an option, a file, a scenario key) and
+// the offending corner.
+CutPolygon parse_cut_polygon(const std::string& text, const std::string& source, const CutPolygonDef& def = {});
 
 }  // namespace mtcut::cut

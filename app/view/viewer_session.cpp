@@ -33,7 +33,7 @@ void ViewerSession::reset(const sim::WorldDef& def) { start_world(def, false); }
 
 void ViewerSession::start_world(const sim::WorldDef& def, bool replaying) {
   replaying_ = replaying;  // start_pose() reads it; a reset ends a replay...
-  world_ = std::make_unique<sim::World>(loaded_mt_, def, start_pose());
+  world_ = start_organ_world(scenario_, loaded_mt_, def, start_pose());
   mouse_.release();
   last_pose_ = parked_pose();
   engaged_sweeps_ = 0;

@@ -238,7 +238,7 @@ TEST_F(RunCommand, TheSurfaceWrittenIsTheFinestUnlessTheFrontiersIsAskedFor) {
 }
 
 // A mesh file's unit: named or in metres, never both, never with a builtin
-// shape; a mesh too large for the spring model names the units to give.
+// shape; a mesh too large for the spring model is named, with the units to give.
 TEST_F(RunCommand, MeshUnitsAreCheckedAndAMeshInMillimetresIsToldWhatToSay) {
   const std::string builtin = "source = \"builtin:ellipsoid\"";
   expect_rejected(variant(builtin, builtin + "\nunits = \"mm\""), "a unit applies to mesh files only");
@@ -257,6 +257,7 @@ TEST_F(RunCommand, MeshUnitsAreCheckedAndAMeshInMillimetresIsToldWhatToSay) {
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("--units mm"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("beyond what the spring model holds"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("mtcut: " + path("mm.obj") + ": the tets' volume"), std::string::npos) << r.err;
   // Said in millimetres, it runs.
   const std::string said = write("said.toml", variant(builtin, "source = \"" + path("mm.obj") + "\"\nunits = \"mm\""));
   const CommandResult ok = run_mtcut("run " + quoted(said) + " --frames 2 --out " + quoted(path("ok")));
