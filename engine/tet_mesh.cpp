@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/input_error.h"
+#include "engine/radix_sort.h"
 #include "engine/tet_adjacency.h"
 #include "engine/tet_geometry.h"
 
@@ -29,7 +30,14 @@ double TetMesh::total_volume() const {
   return sum;
 }
 
-ValidationReport TetMesh::validate() const {
+namespace {
+
+// TetMesh::validate, with the adjacency built here unless `given`.
+ValidationReport validate_mesh(const TetMesh& mesh, const TetAdjacency* given) {
+  const auto& positions = mesh.positions;
+  const auto& tets = mesh.tets;
+  const auto corners = [&](TetId t) { return mesh.corners(t); };
+  const auto position = [&](VertId v) { return mesh.position(v); };
   ValidationReport report;
   const auto nv = static_cast<std::int32_t>(positions.size());
   for (std::size_t v = 0; v < positions.size(); ++v)
@@ -67,7 +75,13 @@ ValidationReport TetMesh::validate() const {
   // Duplicates: equal sorted ids, each reported against the first tet with them.
   std::vector<std::uint32_t> by_ids(tets.size());
   std::iota(by_ids.begin(), by_ids.end(), 0u);
-  std::stable_sort(by_ids.begin(), by_ids.end(), [&](std::uint32_t a, std::uint32_t b) { return sorted[a] < sorted[b]; });
+  {
+    std::vector<std::uint32_t> scratch;
+    radix_sort<2>(by_ids, scratch, [&](std::uint32_t t) {
+      const auto id = [&](int k) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(sorted[t][k])); };
+      return std::array<std::uint64_t, 2>{id(0) << 32 | id(1), id(2) << 32 | id(3)};
+    });
+  }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;  // (later tet, first tet)
   for (std::size_t i = 1, first = 0; i < by_ids.size(); ++i) {
     if (sorted[by_ids[i]] != sorted[by_ids[first]]) first = i;
@@ -77,7 +91,8 @@ ValidationReport TetMesh::validate() const {
   for (const auto& [t, first] : duplicates)
     report.add("tets " + std::to_string(first) + " and " + std::to_string(t) + " are duplicates");
 
-  const TetAdjacency adj = build_adjacency(*this);
+  const TetAdjacency built = given ? TetAdjacency{} : build_adjacency(mesh);
+  const TetAdjacency& adj = given ? *given : built;
   if (adj.non_manifold_faces > 0)
     report.add(std::to_string(adj.non_manifold_faces) + " faces are shared by more than two tets");
   // Two tets across a face must see it with opposite orientations.
@@ -97,18 +112,30 @@ ValidationReport TetMesh::validate() const {
   }
   // Manifold boundary: every boundary edge is used by exactly two boundary
   // faces, once in each direction.
-  std::vector<std::pair<std::int32_t, std::int32_t>> directed;
+  // The directed edges and, beside them, the same edges reversed, both
+  // sorted: one walk counts each edge's uses in either direction.
+  using Edge = std::pair<std::int32_t, std::int32_t>;
+  std::vector<Edge> directed, reversed, scratch;
   directed.reserve(3 * adj.boundary.size());
   for (const auto& bf : adj.boundary)
     for (int k = 0; k < 3; ++k) directed.emplace_back(bf.verts[k].value, bf.verts[(k + 1) % 3].value);
-  std::sort(directed.begin(), directed.end());
+  reversed.reserve(directed.size());
+  for (const Edge& e : directed) reversed.emplace_back(e.second, e.first);
+  const auto key = [](const Edge& e) {
+    return std::array<std::uint64_t, 1>{static_cast<std::uint64_t>(static_cast<std::uint32_t>(e.first)) << 32 |
+                                        static_cast<std::uint32_t>(e.second)};
+  };
+  radix_sort<1>(directed, scratch, key);
+  radix_sort<1>(reversed, scratch, key);
+  auto back = reversed.begin();
   for (auto it = directed.begin(); it != directed.end();) {
-    const auto edge = *it;
-    const auto next = std::find_if(it, directed.end(), [&](const auto& e) { return e != edge; });
+    const Edge edge = *it;
+    const auto next = std::find_if(it, directed.end(), [&](const Edge& e) { return e != edge; });
     const auto count = next - it;
     it = next;
-    const auto back = std::equal_range(directed.begin(), directed.end(), std::pair{edge.second, edge.first});
-    const auto reverse = back.second - back.first;
+    // Uses of (second, first): the reversed list's entries equal to `edge`.
+    while (back != reversed.end() && *back < edge) ++back;
+    const auto reverse = std::find_if(back, reversed.end(), [&](const Edge& e) { return e != edge; }) - back;
     if (count != 1 || reverse != 1) {
       if (edge.first < edge.second || reverse == 0)
         report.add("boundary edge (" + std::to_string(edge.first) + ", " + std::to_string(edge.second) +
@@ -117,6 +144,12 @@ ValidationReport TetMesh::validate() const {
   }
   return report;
 }
+
+}  // namespace
+
+ValidationReport TetMesh::validate() const { return validate_mesh(*this, nullptr); }
+
+ValidationReport TetMesh::validate(const TetAdjacency& adjacency) const { return validate_mesh(*this, &adjacency); }
 
 TetMesh make_tet_mesh(std::vector<Vec3> positions, const std::vector<std::array<std::int64_t, 4>>& tets,
                       const std::string& source) {

@@ -15,6 +15,8 @@
 
 namespace mtcut::engine {
 
+struct TetAdjacency;
+
 using Tet = std::array<VertId, 4>;
 
 struct TetMesh {
@@ -35,6 +37,9 @@ struct TetMesh {
   // every face shared by at most two tets with opposite orientation, and a
   // manifold boundary (each boundary edge on exactly two boundary faces).
   ValidationReport validate() const;
+  // The same with the mesh's adjacency built already (build_adjacency), for
+  // a caller that reads it too.
+  ValidationReport validate(const TetAdjacency& adjacency) const;
 };
 
 // Builds a TetMesh from raw vertex-index tets: checks ids, turns negatively

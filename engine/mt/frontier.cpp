@@ -219,6 +219,8 @@ ValidationReport validate_frontier(const Mt& mt, const Frontier& frontier) {
   // The mesh is exactly what S defines.
   std::size_t expected = 0;
   std::vector<std::int32_t> uses(mt.num_vertices(), 0);
+  std::vector<TetId> tets;  // the mesh's, by id
+  tets.reserve(frontier.tets().size());
   for (std::size_t i = 0; i < mt.num_tets(); ++i) {
     const TetId t(i);
     const bool in_mesh = mt.alive(t) && frontier.contains(mt.birth(t)) &&
@@ -227,6 +229,7 @@ ValidationReport validate_frontier(const Mt& mt, const Frontier& frontier) {
       ++expected;
       for (VertId v : mt.tet(t)) ++uses[v.index()];
     }
+    if (frontier.has_tet(t)) tets.push_back(t);
     if (in_mesh != frontier.has_tet(t))
       report.add("frontier: tet " + name(t) + (in_mesh ? " is missing from the mesh" : " is in the mesh but should not be"));
   }
@@ -261,21 +264,23 @@ ValidationReport validate_frontier(const Mt& mt, const Frontier& frontier) {
   if (!report.ok()) return report;
 
   // A conforming tessellation: the TetMesh checks, then surface marks, then volume.
+  // The mesh's tet i is the frontier's i-th tet by id (to_tet_mesh), with
+  // its vertices in the same order: one adjacency serves the mesh's checks
+  // and the faces without a neighbour.
   const TetMesh mesh = frontier.to_tet_mesh(mt);
-  for (const auto& problem : mesh.validate().problems) report.add("frontier mesh: " + problem);
-  const std::vector<TetId> tets(frontier.tets().begin(), frontier.tets().end());
-  std::size_t outer_count = 0;
-  for (const OrientedFace& face : outer_faces(mt, tets)) {
-    ++outer_count;
-    if (!(mt.boundary_mask(face.tet) & (1u << face.local_face)))
-      report.add("frontier: face " + std::to_string(face.local_face) + " of tet " + name(face.tet) +
+  const TetAdjacency adjacency = build_adjacency(mesh);
+  for (const auto& problem : mesh.validate(adjacency).problems) report.add("frontier mesh: " + problem);
+  for (const BoundaryFace& face : adjacency.boundary) {
+    const TetId t = tets[face.tet.index()];
+    if (!(mt.boundary_mask(t) & (1u << face.local_face)))
+      report.add("frontier: face " + std::to_string(face.local_face) + " of tet " + name(t) +
                  " has no neighbour but is not on the surface (a hanging face)");
   }
   std::size_t marked = 0;
   for (TetId t : tets) marked += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(mt.boundary_mask(t))));
-  if (marked != outer_count)
-    report.add("frontier: " + std::to_string(marked) + " faces marked as surface, " + std::to_string(outer_count) +
-               " without a neighbour");
+  if (marked != adjacency.boundary.size())
+    report.add("frontier: " + std::to_string(marked) + " faces marked as surface, " +
+               std::to_string(adjacency.boundary.size()) + " without a neighbour");
 
   double expected_volume = mt.fine_volume();
   if (!mt.boundary_preserved()) {

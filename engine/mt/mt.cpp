@@ -376,32 +376,51 @@ std::size_t Mt::bytes() const {
 }
 
 std::vector<OrientedFace> outer_faces(const Mt& mt, std::span<const TetId> tets) {
-  std::vector<OrientedFace> faces;
-  faces.reserve(4 * tets.size());
-  for (TetId t : tets) {
-    const Tet& v = mt.tet(t);
+  // Each face as its ids ascending and where it is (4 list position + local
+  // face), in two words: sorted by them, the copies of a face become
+  // neighbours. A radix sort's passes cost 256 counters each whatever the
+  // size, so a fragment's few faces (validate_fragment asks for every
+  // fragment's) are compared instead.
+  assert(tets.size() < (std::size_t{1} << 30));
+  using FaceKey = std::array<std::uint64_t, 2>;
+  const auto sorted_ids = [](const std::array<VertId, 3>& v) {
+    const auto a = static_cast<std::uint32_t>(v[0].value), b = static_cast<std::uint32_t>(v[1].value),
+               c = static_cast<std::uint32_t>(v[2].value);
+    const std::uint32_t lo = std::min({a, b, c}), hi = std::max({a, b, c});
+    return std::array<std::uint32_t, 3>{lo, a + b + c - lo - hi, hi};
+  };
+  std::vector<FaceKey> keys;
+  keys.reserve(4 * tets.size());
+  for (std::size_t i = 0; i < tets.size(); ++i) {
+    const Tet& v = mt.tet(tets[i]);
     for (int f = 0; f < 4; ++f) {
-      OrientedFace face;
-      face.verts = face_vertices(v, f);
-      face.sorted = face.verts;
-      std::sort(face.sorted.begin(), face.sorted.end());
-      face.tet = t;
-      face.local_face = f;
-      faces.push_back(face);
+      const auto ids = sorted_ids(face_vertices(v, f));
+      keys.push_back({std::uint64_t{ids[0]} << 32 | ids[1], std::uint64_t{ids[2]} << 32 | (4 * i + f)});
     }
   }
-  // By (sorted ids, tet): the copies of a face become neighbours.
-  std::vector<OrientedFace> scratch;
-  radix_sort<2>(faces, scratch, [](const OrientedFace& f) {
-    const auto id = [](std::int32_t v) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)); };
-    return std::array<std::uint64_t, 2>{id(f.sorted[0].value) << 32 | id(f.sorted[1].value),
-                                        id(f.sorted[2].value) << 32 | id(f.tet.value)};
-  });
+  constexpr std::size_t kRadixMin = 1024;
+  if (keys.size() < kRadixMin) {
+    std::sort(keys.begin(), keys.end());
+  } else {
+    std::vector<FaceKey> scratch;
+    radix_sort<2>(keys, scratch, [](const FaceKey& k) { return k; });
+  }
+  const auto same_face = [](const FaceKey& a, const FaceKey& b) { return a[0] == b[0] && a[1] >> 32 == b[1] >> 32; };
   std::vector<OrientedFace> outer;
-  for (std::size_t i = 0; i < faces.size();) {
+  for (std::size_t i = 0; i < keys.size();) {
     std::size_t j = i + 1;
-    while (j < faces.size() && faces[j].sorted == faces[i].sorted) ++j;
-    if (j - i == 1) outer.push_back(faces[i]);
+    while (j < keys.size() && same_face(keys[j], keys[i])) ++j;
+    if (j - i == 1) {
+      const auto at = static_cast<std::uint32_t>(keys[i][1]);
+      OrientedFace face;
+      face.tet = tets[at / 4];
+      face.local_face = static_cast<int>(at % 4);
+      face.verts = face_vertices(mt.tet(face.tet), face.local_face);
+      face.sorted = {VertId(static_cast<std::int32_t>(keys[i][0] >> 32)),
+                     VertId(static_cast<std::int32_t>(static_cast<std::uint32_t>(keys[i][0]))),
+                     VertId(static_cast<std::int32_t>(keys[i][1] >> 32))};
+      outer.push_back(face);
+    }
     i = j;
   }
   return outer;

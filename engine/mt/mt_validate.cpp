@@ -102,16 +102,18 @@ void check_fragments(const Mt& mt, ValidationReport& report) {
 ValidationReport validate_fragment(const Mt& mt, FragId f) {
   ValidationReport report;
   if (f == mt.root() || f == mt.drain()) return report;
+  // The outer faces off the surface, each as its ids ascending and whether
+  // its orientation is an odd permutation of them: two faces are the same
+  // oriented face when both agree. outer_faces gives them in the order of
+  // their ids, each once, so the lists compare as they are.
   const auto inner = [&](std::span<const TetId> tets) {
-    std::vector<std::array<VertId, 3>> faces;
+    std::vector<std::pair<std::array<VertId, 3>, bool>> faces;
     for (const OrientedFace& face : outer_faces(mt, tets))
       if (!(mt.boundary_mask(face.tet) & (1u << face.local_face))) {
-        // Rotate so the smallest id comes first: orientation-preserving key.
-        auto v = face.verts;
-        std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
-        faces.push_back(v);
+        const auto& v = face.verts;
+        const bool odd = ((v[0] > v[1]) + (v[0] > v[2]) + (v[1] > v[2])) % 2 != 0;
+        faces.emplace_back(face.sorted, odd);
       }
-    std::sort(faces.begin(), faces.end());
     return faces;
   };
   if (inner(mt.created(f)) != inner(mt.replaced(f)))
