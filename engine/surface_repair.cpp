@@ -104,9 +104,10 @@ std::vector<Triangle> triangles_of(const SurfaceMesh& surface) {
 bool fit_to_mesh(const Mesh& mesh) {
   if (mesh.is_empty() || !CGAL::is_valid_polygon_mesh(mesh) || !CGAL::is_triangle_mesh(mesh) || !CGAL::is_closed(mesh))
     return false;
-  for (Vertex v : mesh.vertices())
-    if (PMP::is_non_manifold_vertex(v, mesh)) return false;
-  return !PMP::does_self_intersect(mesh);
+  // One pass over the mesh (is_non_manifold_vertex walks every halfedge for each vertex it is asked of).
+  std::vector<Halfedge> pinched;
+  PMP::non_manifold_vertices(mesh, std::back_inserter(pinched));
+  return pinched.empty() && !PMP::does_self_intersect(mesh);
 }
 
 // Turns a fit mesh outward; false when its volume is not positive then.
