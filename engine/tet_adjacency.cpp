@@ -37,15 +37,7 @@ TetAdjacency build_adjacency(const TetMesh& mesh) {
       if (!v.valid()) throw std::invalid_argument("build_adjacency: a tet has a negative vertex id");
       n_ids = std::max(n_ids, v.index() + 1);
     }
-  // Face f's ids, ascending (branch-free: the middle one is what the
-  // smallest and the largest leave of the sum).
-  const auto sorted_face = [&](std::size_t t, int f) {
-    const auto v = face_vertices(mesh.tets[t], f);
-    const auto a = static_cast<std::uint32_t>(v[0].value), b = static_cast<std::uint32_t>(v[1].value),
-               c = static_cast<std::uint32_t>(v[2].value);
-    const std::uint32_t lo = std::min({a, b, c}), hi = std::max({a, b, c});
-    return std::array<std::uint32_t, 3>{lo, a + b + c - lo - hi, hi};
-  };
+  const auto sorted_face = [&](std::size_t t, int f) { return sorted_face_ids(face_vertices(mesh.tets[t], f)); };
   std::vector<std::uint32_t> start(n_ids + 1, 0);  // bucket of smallest id v: [start[v], start[v + 1])
   for (std::size_t t = 0; t < n; ++t)
     for (int f = 0; f < 4; ++f) ++start[sorted_face(t, f)[0] + 1];

@@ -3,7 +3,9 @@
 // faces (face i opposite vertex i, kTetFaces), and the boundary faces oriented
 // outwards. Derived data: rebuild it after editing the mesh.
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "engine/tet_mesh.h"
@@ -28,5 +30,15 @@ TetAdjacency build_adjacency(const TetMesh& mesh);
 
 // The vertex ids of face f of tet t, outward oriented.
 std::array<VertId, 3> face_vertices(const Tet& tet, int f);
+
+// A face's ids ascending, as unsigned words (ids are not negative): the key
+// under which the copies of a face meet (branch-free: the middle one is what
+// the smallest and the largest leave of the sum).
+inline std::array<std::uint32_t, 3> sorted_face_ids(const std::array<VertId, 3>& v) {
+  const auto a = static_cast<std::uint32_t>(v[0].value), b = static_cast<std::uint32_t>(v[1].value),
+             c = static_cast<std::uint32_t>(v[2].value);
+  const std::uint32_t lo = std::min({a, b, c}), hi = std::max({a, b, c});
+  return {lo, a + b + c - lo - hi, hi};
+}
 
 }  // namespace mtcut::engine

@@ -383,18 +383,12 @@ std::vector<OrientedFace> outer_faces(const Mt& mt, std::span<const TetId> tets)
   // fragment's) are compared instead.
   assert(tets.size() < (std::size_t{1} << 30));
   using FaceKey = std::array<std::uint64_t, 2>;
-  const auto sorted_ids = [](const std::array<VertId, 3>& v) {
-    const auto a = static_cast<std::uint32_t>(v[0].value), b = static_cast<std::uint32_t>(v[1].value),
-               c = static_cast<std::uint32_t>(v[2].value);
-    const std::uint32_t lo = std::min({a, b, c}), hi = std::max({a, b, c});
-    return std::array<std::uint32_t, 3>{lo, a + b + c - lo - hi, hi};
-  };
   std::vector<FaceKey> keys;
   keys.reserve(4 * tets.size());
   for (std::size_t i = 0; i < tets.size(); ++i) {
     const Tet& v = mt.tet(tets[i]);
     for (int f = 0; f < 4; ++f) {
-      const auto ids = sorted_ids(face_vertices(v, f));
+      const auto ids = sorted_face_ids(face_vertices(v, f));
       keys.push_back({std::uint64_t{ids[0]} << 32 | ids[1], std::uint64_t{ids[2]} << 32 | (4 * i + f)});
     }
   }
