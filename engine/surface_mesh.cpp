@@ -1,6 +1,7 @@
 #include "engine/surface_mesh.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/IO/importer/ImporterT.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 #include <unistd.h>
@@ -268,23 +269,43 @@ bool is_surface_file(const std::string& path) { return is_surface_format(format_
 
 namespace {
 
+// OpenMesh's importer adds each face it reads to a halfedge mesh, which
+// refuses a face that would make it non-manifold (two parts that touch
+// along an edge or at a vertex); the importer then adds that face over
+// copies of its corners. The surface read keeps every face over the file's
+// own vertices, as the file gives them: the repair (surface_repair.h) sees
+// where the parts touch, and the faces and points it reports are the file's.
+class FileFaces : public OpenMesh::IO::ImporterT<OmMesh> {
+ public:
+  explicit FileFaces(OmMesh& mesh) : ImporterT<OmMesh>(mesh) {}
+  OpenMesh::FaceHandle add_face(const VHandles& corners) override {
+    // Invalid when the importer drops the face: fewer than three corners, a
+    // corner the file does not have, or one given twice (no area).
+    const OpenMesh::FaceHandle face = ImporterT<OmMesh>::add_face(corners);
+    if (face.is_valid()) faces.push_back(corners);
+    return face;
+  }
+  std::vector<VHandles> faces;
+};
+
 // Reads the surface at `read_path` with OpenMesh (in the process it is
 // called in); `path` names it in errors.
 SurfaceMesh read_with_openmesh(const std::string& path, const std::string& read_path, const std::string& ext) {
   OmMesh om;
+  FileFaces file(om);
   {
     QuietOpenMesh quiet;
     OpenMesh::IO::Options options;
-    if (!OpenMesh::IO::read_mesh(om, read_path, options))
+    if (!OpenMesh::IO::IOManager().read(read_path, file, options))
       throw InputError(path + ": cannot read it as a surface (" + ext + ")");
   }
-  if (om.n_faces() == 0) throw InputError(path + ": the surface has no faces");
+  if (file.faces.empty()) throw InputError(path + ": the surface has no faces");
 
   SurfaceMesh surface;
   std::vector<std::int32_t> remap(om.n_vertices(), -1);
-  for (const auto& f : om.faces()) {
+  for (const auto& face : file.faces) {
     std::vector<std::int32_t> loop;
-    for (const auto& v : om.fv_range(f)) {
+    for (const auto& v : face) {
       auto& id = remap[static_cast<std::size_t>(v.idx())];
       if (id < 0) {
         const auto& p = om.point(v);

@@ -175,6 +175,33 @@ TEST_F(SurfaceFiles, EveryFaceIsWrittenEvenWhereTheSurfaceIsNotManifold) {
   EXPECT_THROW(write_surface_file(s, path("degenerate.obj")), std::invalid_argument);
 }
 
+// The same two tets' surfaces read back: OpenMesh's importer would put a
+// face it cannot add to its halfedge mesh over copies of its corners; the
+// surface read keeps every face over the file's own vertices.
+TEST_F(SurfaceFiles, ANonManifoldSurfaceIsReadAsTheFileGivesIt) {
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 -1 -1\n1 1 -1\n";
+  const std::string faces = "0 2 1\n0 1 3\n0 3 2\n1 2 3\n0 4 1\n0 1 5\n0 5 4\n1 4 5\n";
+  std::string obj, off = "OFF\n6 8 0\n" + vertices;
+  std::istringstream v_lines(vertices), f_lines(faces);
+  for (std::string line; std::getline(v_lines, line);) obj += "v " + line + "\n";
+  for (std::string line; std::getline(f_lines, line);) {
+    std::istringstream ids(line);
+    int a = 0, b = 0, c = 0;
+    ids >> a >> b >> c;
+    obj += "f " + std::to_string(a + 1) + " " + std::to_string(b + 1) + " " + std::to_string(c + 1) + "\n";
+    off += "3 " + line + "\n";
+  }
+  for (const auto& [name, text] : {std::pair{"bowtie.obj", obj}, std::pair{"bowtie.off", off}}) {
+    SCOPED_TRACE(name);
+    const SurfaceMesh s = read_surface_file(write(name, text));
+    EXPECT_EQ(s.positions.size(), 6u);
+    ASSERT_EQ(s.triangles.size(), 8u);
+    // Edge 0-1 is in four faces; every other edge in two.
+    EXPECT_EQ(s.count_open_edges(), 1u);
+    EXPECT_NEAR(s.enclosed_volume(), 1.0 / 6 + 1.0 / 3, 1e-12);
+  }
+}
+
 TEST_F(SurfaceFiles, FailedWriteLeavesNothingBehind) {
   SurfaceMesh s = make_builtin_surface(BuiltinShapeDef{BuiltinShape::kBox, Vec3(1, 1, 1), 10});
   EXPECT_THROW(write_surface_file(s, path("nodir/out.obj")), InputError);
