@@ -18,11 +18,6 @@ struct FaceSlot {
 
 }  // namespace
 
-std::array<VertId, 3> face_vertices(const Tet& tet, int f) {
-  const auto& lf = kTetFaces[f];
-  return {tet[lf[0]], tet[lf[1]], tet[lf[2]]};
-}
-
 // Faces are matched by their sorted vertex ids. Why buckets, not one sort:
 // a face's smallest id picks its bucket (a counting sort, linear), and a
 // bucket holds only the dozen or so faces around one vertex, sorted by the

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/tet_geometry.h"
 #include "engine/tet_mesh.h"
 
 namespace mtcut::engine {
@@ -28,8 +29,12 @@ struct TetAdjacency {
 // have positions: only the ids are read).
 TetAdjacency build_adjacency(const TetMesh& mesh);
 
-// The vertex ids of face f of tet t, outward oriented.
-std::array<VertId, 3> face_vertices(const Tet& tet, int f);
+// The vertex ids of face f of tet t, outward oriented (inline: the guard's
+// face chains and every validation call it per face).
+inline std::array<VertId, 3> face_vertices(const Tet& tet, int f) {
+  const auto& lf = kTetFaces[f];
+  return {tet[lf[0]], tet[lf[1]], tet[lf[2]]};
+}
 
 // A face's ids ascending, as unsigned words (ids are not negative): the key
 // under which the copies of a face meet (branch-free: the middle one is what
