@@ -11,6 +11,7 @@
 #include "app/run_summary.h"
 #include "engine/surface_mesh.h"
 #include "tests/app/run_fixture.h"
+#include "tests/broken_surfaces.h"
 #include "tests/app/run_mtcut.h"
 #include "tests/test_paths.h"
 #include "tests/touching_cubes.h"
@@ -339,6 +340,47 @@ TEST_F(RunCommand, ASurfaceThatCrossesItselfIsRepairedAndCut) {
   EXPECT_EQ(out["cuts_refused"].get<int>(), 0);
   EXPECT_FALSE(out["first_cut_frame"].is_null());
   EXPECT_EQ(out["pieces"].get<int>(), 2) << out.dump();  // the stroke cuts the union through
+}
+
+// The other surfaces people have: one with holes, one with a non-manifold
+// seam (a fin on an edge of the organ: three faces on that edge). Each is
+// repaired (one line says so), meshed and cut through by the default
+// stroke.
+TEST_F(RunCommand, SurfacesWithHolesOrANonManifoldSeamAreRepairedAndCut) {
+  engine::SurfaceMesh seam = ellipsoid_surface(organ_size(), Vec3::Zero(), 3000);
+  const std::array<std::int32_t, 3> face = seam.triangles.front();
+  const Vec3 a = seam.positions[static_cast<std::size_t>(face[0])], b = seam.positions[static_cast<std::size_t>(face[1])];
+  seam.positions.push_back(0.5 * (a + b) + 0.01 * (a + b).normalized());
+  seam.triangles.push_back({face[1], face[0], static_cast<std::int32_t>(seam.positions.size() - 1)});
+  ASSERT_GT(seam.count_open_edges(), 0u);
+  const std::pair<const char*, engine::SurfaceMesh> surfaces[] = {{"holed.obj", holed_organ(3000)},
+                                                                  {"seam.obj", seam}};
+  for (const auto& [name, surface] : surfaces) {
+    SCOPED_TRACE(name);
+    const std::string file = path(name);
+    engine::write_surface_file(surface, file);
+    const std::string scenario =
+        write(std::string(name) + ".toml", variant("source = \"builtin:ellipsoid\"", "source = \"" + file + "\""));
+    std::string err;
+    nlohmann::json out = expect_valid_run(quoted(scenario) + " --frames 70", path(std::string("out_") + name), &err);
+    EXPECT_NE(err.find(std::string(name) + ": repaired"), std::string::npos) << err;
+    EXPECT_EQ(out["cuts_refused"].get<int>(), 0);
+    EXPECT_FALSE(out["first_cut_frame"].is_null());
+    EXPECT_EQ(out["pieces"].get<int>(), 2) << out.dump();  // the stroke cuts the organ through
+  }
+}
+
+// An XML VTK file (.vtu) saved with a legacy VTK name is read by its
+// content, meshed and cut through by the default stroke.
+TEST_F(RunCommand, AnXmlVtkFileNamedVtkIsReadByItsContentAndCut) {
+  const std::string vtu = path("organ.vtu"), vtk = path("organ.vtk");
+  ASSERT_EQ(run_mtcut("mesh builtin:ellipsoid --tets 3000 --size 0.16,0.1,0.07 -o " + quoted(vtu)).exit_code, 0);
+  std::filesystem::rename(vtu, vtk);
+  const std::string scenario = write("vtk.toml", variant("source = \"builtin:ellipsoid\"", "source = \"" + vtk + "\""));
+  nlohmann::json out = expect_valid_run(quoted(scenario) + " --frames 70", path("out"));
+  EXPECT_EQ(out["cuts_refused"].get<int>(), 0);
+  EXPECT_FALSE(out["first_cut_frame"].is_null());
+  EXPECT_EQ(out["pieces"].get<int>(), 2) << out.dump();
 }
 
 // An end state that fails validation names the first failing check.
