@@ -277,15 +277,31 @@ namespace {
 // where the parts touch, and the faces and points it reports are the file's.
 class FileFaces : public OpenMesh::IO::ImporterT<OmMesh> {
  public:
-  explicit FileFaces(OmMesh& mesh) : ImporterT<OmMesh>(mesh) {}
+  explicit FileFaces(OmMesh& mesh) : ImporterT<OmMesh>(mesh), om_(mesh) {}
   OpenMesh::FaceHandle add_face(const VHandles& corners) override {
+    // A damaged file's corner index may name one of the copies (the
+    // readers of OFF, PLY and STL take indices as handles): it is not a
+    // vertex of the file, and the face is dropped as the importer drops
+    // one whose corner is no vertex at all.
+    for (const auto& v : corners)
+      if (v.is_valid() && static_cast<std::size_t>(v.idx()) < copy_.size() && copy_[static_cast<std::size_t>(v.idx())])
+        return OpenMesh::FaceHandle();
     // Invalid when the importer drops the face: fewer than three corners, a
-    // corner the file does not have, or one given twice (no area).
+    // corner that is no vertex, or one given twice (no area).
+    const std::size_t vertices = om_.n_vertices();
     const OpenMesh::FaceHandle face = ImporterT<OmMesh>::add_face(corners);
+    if (om_.n_vertices() > vertices) {
+      copy_.resize(om_.n_vertices(), 0);
+      std::fill(copy_.begin() + static_cast<std::ptrdiff_t>(vertices), copy_.end(), 1);
+    }
     if (face.is_valid()) faces.push_back(corners);
     return face;
   }
   std::vector<VHandles> faces;
+
+ private:
+  OmMesh& om_;
+  std::vector<std::uint8_t> copy_;  // (vertices so far, at least those up to the last copy) 1: a copy
 };
 
 // Reads the surface at `read_path` with OpenMesh (in the process it is

@@ -11,8 +11,8 @@
 #include "app/run_summary.h"
 #include "engine/surface_mesh.h"
 #include "tests/app/run_fixture.h"
-#include "tests/broken_surfaces.h"
 #include "tests/app/run_mtcut.h"
+#include "tests/broken_surfaces.h"
 #include "tests/test_paths.h"
 #include "tests/touching_cubes.h"
 
@@ -357,8 +357,14 @@ TEST_F(RunCommand, SurfacesWithHolesOrANonManifoldSeamAreRepairedAndCut) {
                                                                   {"seam.obj", seam}};
   for (const auto& [name, surface] : surfaces) {
     SCOPED_TRACE(name);
-    const std::string file = path(name);
-    engine::write_surface_file(surface, file);
+    // As text: the project's writer would put the fin over copies of its
+    // corners (every face kept, none non-manifold), and the file would
+    // hold no seam.
+    std::ostringstream obj;
+    obj.precision(17);
+    for (const Vec3& p : surface.positions) obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    for (const auto& t : surface.triangles) obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    const std::string file = write(name, obj.str());
     const std::string scenario =
         write(std::string(name) + ".toml", variant("source = \"builtin:ellipsoid\"", "source = \"" + file + "\""));
     std::string err;

@@ -3,10 +3,10 @@
 // at random, through the whole load: read, repair, mesh, split pinches,
 // validate. Each variant gives a valid mesh or one InputError line; never a
 // crash (the sanitizer builds run it too), a hang or another exception.
-// One test per file; 1,000 variants in all, in every build (the sanitizer
-// builds' smaller test size does not turn the corpus down: under
-// AddressSanitizer is where a corrupted file's overrun shows), more at an
-// MTCUT_TEST_SIZE above 1.
+// One test per file; at least 1,000 variants in all (as many per file), in
+// the ASan + UBSan tree too (its smaller test size does not turn the corpus
+// down: under AddressSanitizer is where a corrupted file's overrun shows),
+// more at an MTCUT_TEST_SIZE above 1.
 
 #include <gtest/gtest.h>
 

@@ -191,7 +191,24 @@ TEST_F(SurfaceFiles, ANonManifoldSurfaceIsReadAsTheFileGivesIt) {
     obj += "f " + std::to_string(a + 1) + " " + std::to_string(b + 1) + " " + std::to_string(c + 1) + "\n";
     off += "3 " + line + "\n";
   }
-  for (const auto& [name, text] : {std::pair{"bowtie.obj", obj}, std::pair{"bowtie.off", off}}) {
+  std::string ply = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face 8\nproperty list uchar int vertex_indices\nend_header\n" + vertices;
+  std::string stl = "solid bowtie\n";
+  {
+    std::vector<std::string> points;
+    std::istringstream v_in(vertices), f_in(faces);
+    for (std::string line; std::getline(v_in, line);) points.push_back(line);
+    for (std::string line; std::getline(f_in, line);) {
+      ply += "3 " + line + "\n";
+      std::istringstream ids(line);
+      stl += " facet normal 0 0 0\n  outer loop\n";
+      for (int id = 0; ids >> id;) stl += "   vertex " + points[static_cast<std::size_t>(id)] + "\n";
+      stl += "  endloop\n endfacet\n";
+    }
+    stl += "endsolid bowtie\n";
+  }
+  for (const auto& [name, text] : {std::pair{"bowtie.obj", obj}, std::pair{"bowtie.off", off},
+                                   std::pair{"bowtie.ply", ply}, std::pair{"bowtie.stl", stl}}) {
     SCOPED_TRACE(name);
     const SurfaceMesh s = read_surface_file(write(name, text));
     EXPECT_EQ(s.positions.size(), 6u);
@@ -200,6 +217,14 @@ TEST_F(SurfaceFiles, ANonManifoldSurfaceIsReadAsTheFileGivesIt) {
     EXPECT_EQ(s.count_open_edges(), 1u);
     EXPECT_NEAR(s.enclosed_volume(), 1.0 / 6 + 1.0 / 3, 1e-12);
   }
+  // A damaged OFF whose last face names vertices past the file's six: where
+  // the importer put a refused face's copies. It is no face of the file.
+  std::string damaged = off;
+  damaged.replace(damaged.find("6 8 0"), 5, "6 9 0");
+  damaged += "3 6 7 8\n";
+  const SurfaceMesh s = read_surface_file(write("damaged.off", damaged));
+  EXPECT_EQ(s.positions.size(), 6u);
+  EXPECT_EQ(s.triangles.size(), 8u);
 }
 
 TEST_F(SurfaceFiles, FailedWriteLeavesNothingBehind) {
