@@ -301,7 +301,7 @@ class FileFaces : public OpenMesh::IO::ImporterT<OmMesh> {
 
  private:
   OmMesh& om_;
-  std::vector<std::uint8_t> copy_;  // (vertices so far, at least those up to the last copy) 1: a copy
+  std::vector<std::uint8_t> copy_;  // per vertex up to the last copy the importer made: 1 for a copy
 };
 
 // Reads the surface at `read_path` with OpenMesh (in the process it is

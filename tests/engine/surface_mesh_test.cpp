@@ -179,34 +179,26 @@ TEST_F(SurfaceFiles, EveryFaceIsWrittenEvenWhereTheSurfaceIsNotManifold) {
 // face it cannot add to its halfedge mesh over copies of its corners; the
 // surface read keeps every face over the file's own vertices.
 TEST_F(SurfaceFiles, ANonManifoldSurfaceIsReadAsTheFileGivesIt) {
-  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 -1 -1\n1 1 -1\n";
-  const std::string faces = "0 2 1\n0 1 3\n0 3 2\n1 2 3\n0 4 1\n0 1 5\n0 5 4\n1 4 5\n";
-  std::string obj, off = "OFF\n6 8 0\n" + vertices;
-  std::istringstream v_lines(vertices), f_lines(faces);
-  for (std::string line; std::getline(v_lines, line);) obj += "v " + line + "\n";
-  for (std::string line; std::getline(f_lines, line);) {
-    std::istringstream ids(line);
-    int a = 0, b = 0, c = 0;
-    ids >> a >> b >> c;
-    obj += "f " + std::to_string(a + 1) + " " + std::to_string(b + 1) + " " + std::to_string(c + 1) + "\n";
-    off += "3 " + line + "\n";
+  const char* const points[6] = {"0 0 0", "1 0 0", "0 1 0", "0 0 1", "1 -1 -1", "1 1 -1"};
+  const int faces[8][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 4, 1}, {0, 1, 5}, {0, 5, 4}, {1, 4, 5}};
+  std::string obj, off = "OFF\n6 8 0\n", stl = "solid bowtie\n",
+                   ply = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+                         "property float z\nelement face 8\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const char* p : points) {
+    obj += std::string("v ") + p + "\n";
+    off += std::string(p) + "\n";
+    ply += std::string(p) + "\n";
   }
-  std::string ply = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
-                    "element face 8\nproperty list uchar int vertex_indices\nend_header\n" + vertices;
-  std::string stl = "solid bowtie\n";
-  {
-    std::vector<std::string> points;
-    std::istringstream v_in(vertices), f_in(faces);
-    for (std::string line; std::getline(v_in, line);) points.push_back(line);
-    for (std::string line; std::getline(f_in, line);) {
-      ply += "3 " + line + "\n";
-      std::istringstream ids(line);
-      stl += " facet normal 0 0 0\n  outer loop\n";
-      for (int id = 0; ids >> id;) stl += "   vertex " + points[static_cast<std::size_t>(id)] + "\n";
-      stl += "  endloop\n endfacet\n";
-    }
-    stl += "endsolid bowtie\n";
+  for (const auto& f : faces) {
+    const std::string ids = std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]);
+    obj += "f " + std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) + " " + std::to_string(f[2] + 1) + "\n";
+    off += "3 " + ids + "\n";
+    ply += "3 " + ids + "\n";
+    stl += " facet normal 0 0 0\n  outer loop\n";
+    for (int id : f) stl += std::string("   vertex ") + points[id] + "\n";
+    stl += "  endloop\n endfacet\n";
   }
+  stl += "endsolid bowtie\n";
   for (const auto& [name, text] : {std::pair{"bowtie.obj", obj}, std::pair{"bowtie.off", off},
                                    std::pair{"bowtie.ply", ply}, std::pair{"bowtie.stl", stl}}) {
     SCOPED_TRACE(name);
